@@ -1,0 +1,118 @@
+// adcs-bench. Run e.g.
+//   build/bench/adcs-bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+// and read the *_median rows. Inputs vary between iterations so nothing is constant-folded.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "adcs/adcs.hpp"
+#ifdef ADCS_BENCH_HAVE_SIM
+#include "scenarios/registry.hpp"
+#endif
+
+namespace {
+
+adcs::Mat<3, 4> four_wheel_axes() {
+  adcs::Mat<3, 4> G;
+  const double s = 1.0 / std::sqrt(3.0);
+  G << 1, 0, 0, s, 0, 1, 0, s, 0, 0, 1, s;
+  return G;
+}
+
+// One MrpPd::step() (the controller of rigid-rw-mrp-pd).
+void BM_MrpPd_Step(benchmark::State& state) {
+  adcs::MrpPdParams<4> p;
+  p.K = 1.44;
+  p.P = adcs::Vec3(36, 32, 28).asDiagonal();
+  p.J_rw_B = adcs::Vec3(900, 800, 600).asDiagonal();
+  p.G_s_B = four_wheel_axes();
+  p.J_s.setConstant(0.05);
+  adcs::MrpPd<4> ctrl(p);
+  adcs::MrpPd<4>::Measurement m;
+  m.sigma_BN << 0.1, -0.2, 0.3;
+  m.omega_BN_B << 0.01, 0.002, -0.003;
+  m.Omega << 10, 20, 30, 40;
+  adcs::AttitudeReference r;
+  r.sigma_RN << 0.1, 0.2, -0.3;
+  adcs::MrpPdCommand out;
+  double k = 0.0;
+  for (auto _ : state) {
+    m.sigma_BN(0) = 0.1 + 1e-9 * k;
+    k += 1.0;
+    benchmark::DoNotOptimize(ctrl.step(m, r, out));
+    benchmark::DoNotOptimize(out.L_r_B.data());
+  }
+}
+BENCHMARK(BM_MrpPd_Step);
+
+// One RwTorqueAllocator::allocate() (precomputed pseudo-inverse + scaling).
+void BM_RwAllocation_Step(benchmark::State& state) {
+  adcs::RwAllocationParams<4> p;
+  p.G_s_B = four_wheel_axes();
+  const adcs::RwTorqueAllocator<4> alloc(p);
+  adcs::Vec3 L(0.05, -0.3, 0.1);
+  adcs::Vec<4> us;
+  for (auto _ : state) {
+    L(0) += 1e-12;
+    benchmark::DoNotOptimize(alloc.allocate(L, us));
+    benchmark::DoNotOptimize(us.data());
+  }
+}
+BENCHMARK(BM_RwAllocation_Step);
+
+// Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
+void BM_Pinv3x4(benchmark::State& state) {
+  adcs::Mat<3, 4> X = four_wheel_axes();
+  const adcs::Vec3 v(0.1, 0.2, 0.3);
+  adcs::Vec<4> u;
+  adcs::PinvInfo info;
+  for (auto _ : state) {
+    X(0, 3) += 1e-12;
+    benchmark::DoNotOptimize(adcs::right_pinv_solve<3, 4>(X, v, u, &info));
+    benchmark::DoNotOptimize(u.data());
+  }
+}
+BENCHMARK(BM_Pinv3x4);
+
+// Continuous Lyapunov solve for seed 001's 6x6 A_1 (done once at construction in flight code).
+void BM_Lyapunov6(benchmark::State& state) {
+  adcs::Mat<3, 6> K;
+  const double r2 = std::sqrt(2.0);
+  const adcs::AxisPoles<3> poles{{{{{-0.2, 0.2}, {-0.2, -0.2}}},
+                                  {{{-0.3, 0.3}, {-0.3, -0.3}}},
+                                  {{{-0.2 * r2, 0}, {-0.3 * r2, 0}}}}};
+  if (adcs::place_double_integrator<3>(poles, K) != adcs::Status::ok) state.SkipWithError("place");
+  adcs::Mat6 A1 = adcs::double_integrator_closed_loop<3>(K);
+  adcs::Mat6 P;
+  for (auto _ : state) {
+    A1(3, 0) -= 1e-15;
+    benchmark::DoNotOptimize(adcs::solve_continuous_lyapunov<6>(A1, adcs::Mat6::Identity(), P));
+    benchmark::DoNotOptimize(P.data());
+  }
+}
+BENCHMARK(BM_Lyapunov6);
+
+#ifdef ADCS_BENCH_HAVE_SIM
+// One 300 s closed-loop run of rigid-rw-mrp-pd (CVODE Adams, 10 Hz ZOH, no file output).
+void BM_RigidRw_300s(benchmark::State& state) {
+  const adcs::sim::Scenario* s = adcs::sim::find_scenario("rigid-rw-mrp-pd");
+  if (!s) {
+    state.SkipWithError("rigid-rw-mrp-pd not registered");
+    return;
+  }
+  adcs::sim::ParamSet params;
+  s->declare(params);
+  params.set("duration_s", "300");
+  adcs::sim::RunContext ctx;
+  ctx.quiet = true;
+  for (auto _ : state) {
+    adcs::sim::RunResult r = s->run(params, ctx);
+    benchmark::DoNotOptimize(r.metrics.data());
+  }
+}
+BENCHMARK(BM_RigidRw_300s)->Unit(benchmark::kMillisecond);
+#endif
+
+}  // namespace
+
+BENCHMARK_MAIN();

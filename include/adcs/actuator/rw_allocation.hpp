@@ -1,0 +1,64 @@
+#pragma once
+// Reaction-wheel torque allocation: body torque request L_r -> wheel motor torques u_s.
+// The wheels act on the body with -G_s u_s (see plant/rigid_body_rw.hpp), so the minimum-norm
+// solution of -G_s u_s = L_r is u_s = -G_s^+ L_r with G_s^+ = G_s^T (G_s G_s^T)^-1. G_s is
+// constant, so G_s^+ is computed once. Commands beyond the per-wheel limit are scaled down
+// together, which keeps the direction of the delivered torque (clipping each wheel would not).
+#include "adcs/core/failure_hook.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/math/pinv.hpp"
+
+namespace adcs {
+
+template <int N>
+struct RwAllocationParams {
+  Mat<3, N> G_s_B = Mat<3, N>::Zero();  //!< [-] wheel spin axes (unit columns), B components
+  double torque_limit = 0.2;            //!< [N m] per-wheel motor torque limit (> 0)
+};
+
+template <int N>
+class RwTorqueAllocator {
+ public:
+  using Params = RwAllocationParams<N>;
+
+  explicit RwTorqueAllocator(const Params& p) noexcept : p_(p) {
+    G_pinv_.setZero();
+    const Status s = right_pinv<3, N>(p_.G_s_B, G_pinv_, &info_);
+    status_ = ADCS_CHECK(s == Status::ok && p_.torque_limit > 0.0,
+                         "RwTorqueAllocator: wheel axes must span R^3, torque_limit > 0")
+                  ? Status::ok
+                  : Status::invalid_parameter;
+  }
+
+  Status status() const noexcept { return status_; }
+  //! Conditioning of G_s seen at construction.
+  const PinvInfo& geometry() const noexcept { return info_; }
+
+  //! u_s = -G_s^+ L_r_B, scaled into the limit. Returns saturated when scaled, non_finite_input
+  //! (u_s untouched) on a non-finite request, invalid_parameter if construction failed.
+  [[nodiscard]] Status allocate(const Vec3& L_r_B, Vec<N>& u_s) const noexcept {
+    if (status_ != Status::ok) return status_;
+    if (!all_finite(L_r_B)) return Status::non_finite_input;
+    Vec<N> cmd;
+    cmd.noalias() = -G_pinv_ * L_r_B;
+    const double peak = cmd.cwiseAbs().maxCoeff();
+    Status s = Status::ok;
+    if (peak > p_.torque_limit) {
+      cmd *= p_.torque_limit / peak;
+      // The scaled peak can exceed the limit by one rounding; clamp so |u_s| <= limit exactly.
+      cmd = cmd.cwiseMin(p_.torque_limit).cwiseMax(-p_.torque_limit);
+      s = Status::saturated;
+    }
+    u_s = cmd;
+    return s;
+  }
+
+ private:
+  Params p_;
+  Mat<N, 3> G_pinv_;
+  PinvInfo info_;
+  Status status_ = Status::ok;
+};
+
+}  // namespace adcs

@@ -1,0 +1,15 @@
+#pragma once
+// Umbrella header: everything a flight application may include.
+#include "adcs/core/failure_hook.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/math/euler.hpp"
+#include "adcs/math/lyapunov.hpp"
+#include "adcs/math/mrp.hpp"
+#include "adcs/math/pinv.hpp"
+#include "adcs/math/place.hpp"
+#include "adcs/math/quaternion.hpp"
+#include "adcs/math/so3.hpp"
+#include "adcs/actuator/rw_allocation.hpp"
+#include "adcs/control/mrp_pd.hpp"
+#include "adcs/plant/rigid_body_rw.hpp"

@@ -1,0 +1,89 @@
+#pragma once
+// MRP proportional-derivative attitude tracking law with gyroscopic compensation, the
+// baseline against Basilisk's mrpFeedback (K_i = 0) + rwMotorTorque:
+//   L_r = -K sigma_BR - P omega_BR_B + J_RW (domega_RN_B - omega_BN_B x omega_RN_B)
+//         + omega_BN_B x (J_RW omega_BN_B + G_s h_s)
+// (Schaub & Junkins, "Analytical Mechanics of Space Systems", eq. (8.106)-(8.110)); globally
+// asymptotically stable for K > 0, P > 0 with unsaturated torques. The output is the body torque
+// request L_r_B; RwTorqueAllocator maps it to wheel torques.
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/math/mrp.hpp"
+
+namespace adcs {
+
+template <int N>
+struct MrpPdParams {
+  double K = 1.0;                        //!< [N m] attitude gain on sigma_BR
+  Mat3 P = Mat3::Identity();             //!< [N m s] rate gain on omega_BR_B
+  Mat3 J_rw_B = Mat3::Identity();        //!< [kg m^2] J - sum J_s g g^T, B components
+  Mat<3, N> G_s_B = Mat<3, N>::Zero();   //!< [-] wheel spin axes, B components
+  Vec<N> J_s = Vec<N>::Zero();           //!< [kg m^2] wheel spin inertias
+};
+
+template <int N>
+struct MrpPdMeasurement {
+  Vec3 sigma_BN = Vec3::Zero();    //!< [-] attitude MRP
+  Vec3 omega_BN_B = Vec3::Zero();  //!< [rad/s] body rate
+  Vec<N> Omega = Vec<N>::Zero();   //!< [rad/s] wheel speeds relative to the body
+};
+
+struct AttitudeReference {
+  Vec3 sigma_RN = Vec3::Zero();     //!< [-] reference attitude MRP
+  Vec3 omega_RN_N = Vec3::Zero();   //!< [rad/s] reference rate, N components
+  Vec3 domega_RN_N = Vec3::Zero();  //!< [rad/s^2] reference angular acceleration, N components
+};
+
+struct MrpPdCommand {
+  Vec3 L_r_B = Vec3::Zero();      //!< [N m] requested body control torque
+  Vec3 sigma_BR = Vec3::Zero();   //!< [-] attitude error used (diagnostic)
+  Vec3 omega_BR_B = Vec3::Zero(); //!< [rad/s] rate error used (diagnostic)
+};
+
+template <int N>
+class MrpPd {
+ public:
+  using Params = MrpPdParams<N>;
+  using Measurement = MrpPdMeasurement<N>;
+  using Reference = AttitudeReference;
+  using Command = MrpPdCommand;
+
+  explicit MrpPd(const Params& p) noexcept : p_(p) { reset(); }
+
+  //! Clears the held command (the law has no other time-varying state).
+  void reset() noexcept { last_ = Command{}; }
+
+  //! Computes L_r. On non-finite input returns non_finite_input and `out` receives the last
+  //! good command (zero after reset()); the output is always finite.
+  [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out) noexcept {
+    if (!all_finite(m.sigma_BN) || !all_finite(m.omega_BN_B) || !all_finite(m.Omega) ||
+        !all_finite(r.sigma_RN) || !all_finite(r.omega_RN_N) || !all_finite(r.domega_RN_N)) {
+      out = last_;
+      return Status::non_finite_input;
+    }
+    const Mat3 C_BN = mrp_to_dcm(m.sigma_BN);
+    const Vec3 omega_RN_B = C_BN * r.omega_RN_N;
+    const Vec3 domega_RN_B = C_BN * r.domega_RN_N;
+    Command c;
+    c.sigma_BR = mrp_subtract(m.sigma_BN, r.sigma_RN);
+    c.omega_BR_B = m.omega_BN_B - omega_RN_B;
+    const Vec3& w = m.omega_BN_B;
+    const Vec<N> h_s = p_.J_s.cwiseProduct(p_.G_s_B.transpose() * w + m.Omega);
+    const Vec3 H_B = p_.J_rw_B * w + p_.G_s_B * h_s;
+    c.L_r_B = -p_.K * c.sigma_BR - p_.P * c.omega_BR_B +
+              p_.J_rw_B * (domega_RN_B - w.cross(omega_RN_B)) + w.cross(H_B);
+    if (!all_finite(c.L_r_B)) {  // overflow from absurd (finite) inputs
+      out = last_;
+      return Status::out_of_range;
+    }
+    last_ = c;
+    out = c;
+    return Status::ok;
+  }
+
+ private:
+  Params p_;
+  Command last_;
+};
+
+}  // namespace adcs

@@ -1,0 +1,35 @@
+#pragma once
+// Small fixed-size aliases used across the library. All quantities are SI (rad, s, m, N m,
+// kg m^2, N m s) unless a name or comment says otherwise. Frames follow the Basilisk naming:
+// `sigma_BN` is the MRP of body B relative to inertial N, `omega_BN_B` that rate in B components.
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+#include <cmath>
+
+namespace adcs {
+
+using Scalar = double;
+template <int Rows, int Cols>
+using Mat = Eigen::Matrix<double, Rows, Cols, (Cols == 1 && Rows != 1) ? Eigen::ColMajor
+                                              : (Rows == 1 && Cols != 1) ? Eigen::RowMajor
+                                                                         : Eigen::ColMajor>;
+template <int N>
+using Vec = Eigen::Matrix<double, N, 1>;
+using Vec3 = Vec<3>;
+using Vec4 = Vec<4>;
+using Vec6 = Vec<6>;
+using Mat3 = Mat<3, 3>;
+using Mat6 = Mat<6, 6>;
+
+//! True when every coefficient is finite (no NaN, no Inf). Works on any Eigen expression.
+template <class Derived>
+inline bool all_finite(const Eigen::DenseBase<Derived>& x) noexcept {
+  for (Eigen::Index j = 0; j < x.cols(); ++j)
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+      if (!std::isfinite(x(i, j))) return false;
+  return true;
+}
+
+inline bool all_finite(double x) noexcept { return std::isfinite(x); }
+
+}  // namespace adcs

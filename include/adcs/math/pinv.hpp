@@ -1,0 +1,114 @@
+#pragma once
+// Right pseudo-inverse of a fat, full-row-rank matrix X (R <= C): u = X^T (X X^T)^-1 v, the
+// minimum-norm solution of X u = v (seed 001 §A.3 step 10), and a singularity-robust (damped
+// least-squares) variant u = X^T (X X^T + lambda^2 I)^-1 v for steering near singular geometry.
+// Every call reports the conditioning it saw: an inversion whose status is ignored is the bug
+// Basilisk's rwMotorTorque has; here the status is [[nodiscard]].
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <limits>
+
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+//! Diagnostics of one inversion. Singular values are those of X (sqrt of eig(X X^T)).
+struct PinvInfo {
+  double sigma_min = 0.0;    //!< [-] smallest singular value of X
+  double sigma_max = 0.0;    //!< [-] largest singular value of X
+  double condition = 0.0;    //!< [-] cond(X X^T) = (sigma_max / sigma_min)^2 (inf if singular)
+  double damping = 0.0;      //!< [-] lambda^2 added to X X^T (0 for the exact inverse)
+  bool damped = false;       //!< true if the damped (singularity-robust) inverse was used
+};
+
+//! Threshold on cond(X X^T) beyond which the exact inverse is refused (seed 001 §A.3 step 10
+//! flags cond(M) > 1e12).
+inline constexpr double kPinvMaxCondition = 1e12;
+
+namespace detail {
+template <int R, int C>
+inline void fill_singular_values(const Mat<R, R>& M, PinvInfo& info) noexcept {
+  Eigen::SelfAdjointEigenSolver<Mat<R, R>> eig;
+  eig.compute(M, Eigen::EigenvaluesOnly);
+  const double lmin = std::max(eig.eigenvalues()(0), 0.0);
+  const double lmax = std::max(eig.eigenvalues()(R - 1), 0.0);
+  info.sigma_min = std::sqrt(lmin);
+  info.sigma_max = std::sqrt(lmax);
+  info.condition = lmin > 0.0 ? lmax / lmin : std::numeric_limits<double>::infinity();
+}
+}  // namespace detail
+
+//! u = X^T (X X^T)^-1 v through an LDLT of the SPD matrix X X^T.
+//! Returns non_finite_input or singular (cond(X X^T) > kPinvMaxCondition) with u untouched.
+template <int R, int C>
+Status right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
+                        PinvInfo* info = nullptr) noexcept {
+  static_assert(R <= C, "right pseudo-inverse needs a fat matrix (rows <= cols)");
+  if (!all_finite(X) || !all_finite(v)) return Status::non_finite_input;
+  const Mat<R, R> M = X * X.transpose();
+  PinvInfo local;
+  detail::fill_singular_values<R, C>(M, local);
+  if (info) *info = local;
+  if (!(local.condition <= kPinvMaxCondition)) return Status::singular;
+  const Eigen::LDLT<Mat<R, R>> ldlt(M);
+  if (ldlt.info() != Eigen::Success) return Status::singular;
+  const Vec<R> y = ldlt.solve(v);
+  u.noalias() = X.transpose() * y;
+  return Status::ok;
+}
+
+//! The matrix X^+ = X^T (X X^T)^-1 itself (for tests and offline allocation matrices).
+template <int R, int C>
+Status right_pinv(const Mat<R, C>& X, Mat<C, R>& X_pinv, PinvInfo* info = nullptr) noexcept {
+  static_assert(R <= C, "right pseudo-inverse needs a fat matrix (rows <= cols)");
+  if (!all_finite(X)) return Status::non_finite_input;
+  const Mat<R, R> M = X * X.transpose();
+  PinvInfo local;
+  detail::fill_singular_values<R, C>(M, local);
+  if (info) *info = local;
+  if (!(local.condition <= kPinvMaxCondition)) return Status::singular;
+  const Eigen::LDLT<Mat<R, R>> ldlt(M);
+  if (ldlt.info() != Eigen::Success) return Status::singular;
+  X_pinv.noalias() = X.transpose() * ldlt.solve(Mat<R, R>::Identity());
+  return Status::ok;
+}
+
+//! Parameters of the singularity-robust inverse. Damping follows the classic "variable
+//! damping" rule (Nakamura & Hanafusa 1986; Maciejewski & Klein 1988): no damping while
+//! sigma_min >= sigma_threshold, then lambda^2 = lambda_max^2 (1 - (sigma_min/sigma_threshold)^2),
+//! so the inverse is continuous in X and bounded at an exactly singular X:
+//! |u| <= |v| / (2 lambda) along the lost direction.
+struct DampingParams {
+  double sigma_threshold = 1e-3;  //!< [-] sigma_min below which damping starts
+  double lambda_max = 1e-2;       //!< [-] damping at sigma_min = 0 (lambda, not squared)
+};
+
+//! u = X^T (X X^T + lambda^2 I)^-1 v. Returns ok (no damping needed), ill_conditioned (damped,
+//! u usable), or non_finite_input / singular (u untouched; singular only when lambda_max = 0
+//! and X X^T cannot be factored).
+template <int R, int C>
+Status damped_right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
+                               const DampingParams& params, PinvInfo* info = nullptr) noexcept {
+  static_assert(R <= C, "right pseudo-inverse needs a fat matrix (rows <= cols)");
+  if (!all_finite(X) || !all_finite(v)) return Status::non_finite_input;
+  Mat<R, R> M = X * X.transpose();
+  PinvInfo local;
+  detail::fill_singular_values<R, C>(M, local);
+  if (local.sigma_min < params.sigma_threshold) {
+    const double r = local.sigma_min / params.sigma_threshold;
+    local.damping = params.lambda_max * params.lambda_max * (1.0 - r * r);
+    local.damped = local.damping > 0.0;
+    M.diagonal().array() += local.damping;
+  }
+  if (info) *info = local;
+  const Eigen::LDLT<Mat<R, R>> ldlt(M);
+  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1.0 / (1e4 * kPinvMaxCondition)))
+    return Status::singular;
+  const Vec<R> y = ldlt.solve(v);
+  u.noalias() = X.transpose() * y;
+  return local.damped ? Status::ill_conditioned : Status::ok;
+}
+
+}  // namespace adcs

@@ -1,0 +1,558 @@
+#include "cli/commands.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <ostream>
+#include <set>
+
+#include "cli/atomic_file.hpp"
+#include "cli/json.hpp"
+#include "scenarios/registry.hpp"
+
+namespace adcs::sim::cli {
+namespace {
+
+constexpr const char* kProg = "adcs-sim";
+constexpr std::uint64_t kMaxRuns = 1000000;
+
+//! A failure of the scenario's run() or of its result (exit 1).
+struct RunFailure : std::runtime_error {
+  using runtime_error::runtime_error;
+};
+
+// ---- parameters -----------------------------------------------------------------------------
+
+ParamSet declared_params(const Scenario& s,
+                         const std::vector<std::pair<std::string, std::string>>& sets) {
+  ParamSet ps;
+  s.declare(ps);
+  for (const auto& [key, text] : sets) {
+    try {
+      ps.set(key, text);
+    } catch (const ParamError& e) {
+      throw ParamError(std::string(e.what()) + " (see '" + kProg + " describe " + s.name() +
+                       "')");
+    }
+  }
+  // Checks every scenario shares (they are declared as numbers by contract).
+  for (const char* key : {"duration_s", "control_period_s"}) {
+    if (ps.has(key) && ps.at(key).kind == ParamKind::number && !(ps.get_number(key) > 0.0))
+      throw ParamError(std::string("parameter '") + key + "' must be > 0, got " +
+                       format_value(ps.at(key)));
+  }
+  return ps;
+}
+
+void write_param_value(JsonWriter& w, ParamKind kind, const ParamValue& v) {
+  switch (kind) {
+    case ParamKind::number: w.value(v.number); break;
+    case ParamKind::vector: w.value(v.vector); break;
+    case ParamKind::matrix: w.value(v.matrix); break;
+    case ParamKind::name: w.value(v.name); break;
+  }
+}
+
+void write_parameters(JsonWriter& w, const ParamSet& ps) {
+  w.key("parameters").begin_object();
+  for (const Param& p : ps) {
+    w.key(p.key).begin_object();
+    w.key("value");
+    write_param_value(w, p.kind, p.value);
+    w.key("unit").value(p.unit);
+    if (p.overridden) {
+      w.key("source").value("command line (--set)");
+      w.key("default");
+      write_param_value(w, p.kind, p.default_value);
+      w.key("default_source").value(p.source);
+    } else {
+      w.key("source").value(p.source);
+    }
+    w.end_object();
+  }
+  w.end_object();
+}
+
+// ---- running --------------------------------------------------------------------------------
+
+void check_metrics(const Scenario& s, const RunResult& r) {
+  std::set<std::string> seen;
+  for (const auto& [name, value] : r.metrics) {
+    (void)value;
+    const bool bad = name.empty() || std::any_of(name.begin(), name.end(), [](char c) {
+                       return c == ',' || c == '"' || static_cast<unsigned char>(c) < 0x20;
+                     });
+    if (bad)
+      throw RunFailure("scenario '" + s.name() + "' returned an invalid metric name '" + name +
+                       "'");
+    if (!seen.insert(name).second)
+      throw RunFailure("scenario '" + s.name() + "' returned metric '" + name + "' twice");
+  }
+}
+
+RunResult run_scenario(const Scenario& s, const ParamSet& ps, const RunContext& ctx) {
+  RunResult r;
+  try {
+    r = s.run(ps, ctx);
+  } catch (const ParamError&) {
+    throw;  // an invalid value the scenario detected: exit 2
+  } catch (const std::exception& e) {
+    throw RunFailure("scenario '" + s.name() + "' failed (seed " + std::to_string(ctx.seed) +
+                     "): " + e.what());
+  } catch (...) {
+    throw RunFailure("scenario '" + s.name() + "' failed (seed " + std::to_string(ctx.seed) +
+                     "): unknown exception");
+  }
+  check_metrics(s, r);
+  return r;
+}
+
+void write_metrics(JsonWriter& w, const RunResult& r) {
+  w.key("metrics").begin_object();
+  for (const auto& [name, value] : r.metrics) w.key(name).value(value);
+  w.end_object();
+}
+
+const Scenario& lookup(const Catalog& catalog, const std::string& name) {
+  const Scenario* s = catalog.find(name);
+  if (!s) throw UsageError("unknown scenario '" + name + "' (see '" + kProg + " list')");
+  return *s;
+}
+
+std::string csv_number(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  return json_number(x);
+}
+
+// ---- commands -------------------------------------------------------------------------------
+
+int cmd_list(const Options&, const Catalog& catalog, std::ostream& out) {
+  for (const Scenario* s : catalog.scenarios) out << s->name() << '\n';
+  out.flush();
+  return kExitOk;
+}
+
+int cmd_describe(const Options& o, const Catalog& catalog, std::ostream& out) {
+  const Scenario& s = lookup(catalog, o.scenario);
+  ParamSet ps;
+  s.declare(ps);
+  out << s.name() << ": " << s.description() << "\n\n";
+  out << "parameters (override with: " << kProg << " run " << s.name() << " --set KEY=VALUE):\n";
+  std::size_t wk = 0;
+  for (const Param& p : ps) wk = std::max(wk, p.key.size());
+  for (const Param& p : ps) {
+    out << "  " << p.key << std::string(wk - p.key.size(), ' ') << " = " << format_value(p);
+    if (!p.unit.empty()) out << " [" << p.unit << "]";
+    out << "  (" << describe_kind(p) << ")\n";
+    out << "  " << std::string(wk, ' ') << "   source: " << p.source << '\n';
+  }
+  out.flush();
+  return kExitOk;
+}
+
+int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
+  const Scenario& s = lookup(catalog, o.scenario);
+  const ParamSet ps = declared_params(s, o.sets);
+  const std::uint64_t seed = o.seed.value_or(0);
+
+  OutputDir dir(o.out_dir.value_or("out"));
+  TempFile csv(dir.path(), s.name() + ".csv");
+  TempFile json(dir.path(), s.name() + ".json");
+
+  RunContext ctx;
+  ctx.csv_path = csv.temp_path();
+  ctx.seed = seed;
+  ctx.quiet = false;
+  const RunResult r = run_scenario(s, ps, ctx);
+  if (!csv.temp_exists())
+    throw RunFailure("scenario '" + s.name() + "' did not write its time series to " +
+                     ctx.csv_path);
+
+  JsonWriter w(2);
+  w.begin_object();
+  w.key("scenario").value(s.name());
+  w.key("seed").value(seed);
+  w.key("description").value(s.description());
+  write_parameters(w, ps);
+  write_metrics(w, r);
+  w.key("claims").begin_array();
+  for (const Claim& c : r.claims) {
+    w.begin_object();
+    w.key("kind").value(c.kind);
+    w.key("claim").value(c.claim);
+    w.key("paper_value").value(c.paper_value);
+    w.key("ours").value(c.ours);
+    w.key("holds").value(c.holds);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("plots").begin_array();
+  for (const PlotSpec& p : r.plots) {
+    w.begin_object();
+    w.key("file").value(p.file);
+    w.key("title").value(p.title);
+    w.key("x").value(p.x);
+    w.key("y").value(p.y);
+    w.key("ylabel").value(p.ylabel);
+    w.key("logy").value(p.logy);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("csv").value(s.name() + ".csv");
+  w.end_object();
+  json.write(w.str() + "\n");
+
+  csv.commit();
+  try {
+    json.commit();
+  } catch (...) {
+    csv.uncommit();
+    throw;
+  }
+  dir.keep();
+
+  JsonWriter line;
+  line.begin_object();
+  line.key("scenario").value(s.name());
+  line.key("seed").value(seed);
+  write_metrics(line, r);
+  line.end_object();
+  out << "wrote " << csv.final_path() << " and " << json.final_path() << '\n';
+  out << line.str() << std::endl;
+  return kExitOk;
+}
+
+struct Summary {
+  double min = std::numeric_limits<double>::quiet_NaN();
+  double median = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
+  std::size_t nonfinite = 0;
+};
+
+Summary summarize(std::vector<double> v) {
+  Summary s;
+  const auto end = std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); });
+  s.nonfinite = static_cast<std::size_t>(v.end() - end);
+  v.erase(end, v.end());
+  if (v.empty()) return s;
+  std::sort(v.begin(), v.end());
+  s.min = v.front();
+  s.max = v.back();
+  const std::size_t n = v.size();
+  s.median = (n % 2) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  return s;
+}
+
+void write_summary(JsonWriter& w, const std::vector<std::string>& names,
+                   const std::vector<std::vector<double>>& columns) {
+  w.key("metrics").begin_object();
+  for (std::size_t m = 0; m < names.size(); ++m) {
+    const Summary s = summarize(columns[m]);
+    w.key(names[m]).begin_object();
+    w.key("min").value(s.min);
+    w.key("median").value(s.median);
+    w.key("max").value(s.max);
+    if (s.nonfinite) w.key("nonfinite").value(static_cast<unsigned long long>(s.nonfinite));
+    w.end_object();
+  }
+  w.end_object();
+}
+
+int cmd_montecarlo(const Options& o, const Catalog& catalog, std::ostream& out,
+                   std::ostream& err) {
+  const Scenario& s = lookup(catalog, o.scenario);
+  const ParamSet ps = declared_params(s, o.sets);
+  const std::uint64_t runs = *o.runs;
+  const std::uint64_t seed0 = o.seed0.value_or(1);
+
+  OutputDir dir(o.out_dir.value_or("out"));
+  const std::string stem = s.name() + "-montecarlo";
+  TempFile csv(dir.path(), stem + ".csv");
+  TempFile json(dir.path(), stem + ".json");
+
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;  // per metric, per run
+  for (std::uint64_t k = 0; k < runs; ++k) {
+    RunContext ctx;
+    ctx.seed = seed0 + k;
+    ctx.quiet = true;
+    const auto t0 = std::chrono::steady_clock::now();
+    const RunResult r = run_scenario(s, ps, ctx);
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (k == 0) {
+      for (const auto& m : r.metrics) names.push_back(m.first);
+      columns.resize(names.size());
+    }
+    std::map<std::string, double> by_name(r.metrics.begin(), r.metrics.end());
+    if (by_name.size() != names.size())
+      throw RunFailure("scenario '" + s.name() + "' returned a different set of metrics for seed " +
+                       std::to_string(ctx.seed));
+    for (std::size_t m = 0; m < names.size(); ++m) {
+      const auto it = by_name.find(names[m]);
+      if (it == by_name.end())
+        throw RunFailure("scenario '" + s.name() + "' did not return metric '" + names[m] +
+                         "' for seed " + std::to_string(ctx.seed));
+      columns[m].push_back(it->second);
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " (%.2f s)", dt);
+    err << '[' << (k + 1) << '/' << runs << "] seed=" << ctx.seed << buf << '\n';
+    err.flush();
+  }
+
+  std::string table = "seed";
+  for (const auto& n : names) table += "," + n;
+  table += '\n';
+  for (std::uint64_t k = 0; k < runs; ++k) {
+    table += std::to_string(seed0 + k);
+    for (const auto& col : columns) table += "," + csv_number(col[k]);
+    table += '\n';
+  }
+  csv.write(table);
+
+  JsonWriter w(2);
+  w.begin_object();
+  w.key("scenario").value(s.name());
+  w.key("runs").value(runs);
+  w.key("seed0").value(seed0);
+  w.key("description").value(s.description());
+  write_parameters(w, ps);
+  write_summary(w, names, columns);
+  w.key("csv").value(stem + ".csv");
+  w.end_object();
+  json.write(w.str() + "\n");
+
+  csv.commit();
+  try {
+    json.commit();
+  } catch (...) {
+    csv.uncommit();
+    throw;
+  }
+  dir.keep();
+
+  JsonWriter line;
+  line.begin_object();
+  line.key("scenario").value(s.name());
+  line.key("runs").value(runs);
+  line.key("seed0").value(seed0);
+  write_summary(line, names, columns);
+  line.end_object();
+  out << "wrote " << csv.final_path() << " and " << json.final_path() << '\n';
+  out << line.str() << std::endl;
+  return kExitOk;
+}
+
+}  // namespace
+
+// ---- public ---------------------------------------------------------------------------------
+
+const Scenario* Catalog::find(const std::string& name) const {
+  for (const Scenario* s : scenarios)
+    if (s->name() == name) return s;
+  return nullptr;
+}
+
+Catalog Catalog::registered() {
+  Catalog c;
+  for (const auto& s : all_scenarios()) c.scenarios.push_back(s.get());
+  return c;
+}
+
+std::string one_line(const std::string& msg) {
+  std::string s = msg;
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  return s;
+}
+
+std::uint64_t parse_uint(const std::string& what, const std::string& text) {
+  if (text.empty()) throw UsageError(what + " needs a value");
+  std::uint64_t v = 0;
+  for (char c : text) {
+    if (c < '0' || c > '9')
+      throw UsageError(what + " must be a non-negative integer, got '" + text + "'");
+    const auto d = static_cast<std::uint64_t>(c - '0');
+    if (v > (std::numeric_limits<std::uint64_t>::max() - d) / 10)
+      throw UsageError(what + " is too large: '" + text + "'");
+    v = v * 10 + d;
+  }
+  return v;
+}
+
+Options parse_options(const std::string& command, const std::vector<std::string>& args) {
+  const bool is_run = command == "run", is_mc = command == "montecarlo";
+  const bool takes_name = is_run || is_mc || command == "describe";
+  Options o;
+  bool have_name = false;
+  std::set<std::string> set_keys;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      o.help = true;
+      continue;
+    }
+    if (a.size() > 1 && a[0] == '-') {
+      std::string opt = a, val;
+      bool inline_val = false;
+      if (const auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
+        opt = a.substr(0, eq);
+        val = a.substr(eq + 1);
+        inline_val = true;
+      }
+      const bool known = ((is_run || is_mc) && (opt == "--set" || opt == "--out")) ||
+                         (is_run && opt == "--seed") ||
+                         (is_mc && (opt == "--runs" || opt == "--seed0"));
+      if (!known) {
+        if (!is_mc && (opt == "--runs" || opt == "--seed0"))
+          throw UsageError("option " + opt + " belongs to 'montecarlo', not '" + command + "'");
+        if (is_mc && opt == "--seed")
+          throw UsageError("montecarlo takes --seed0 S (seeds S..S+R-1), not --seed");
+        throw UsageError("unknown option '" + opt + "' for '" + command + "' (see '" + kProg +
+                         " help')");
+      }
+      if (!inline_val) {
+        if (i + 1 >= args.size()) throw UsageError("option " + opt + " needs a value");
+        val = args[++i];
+      }
+      if (opt == "--set") {
+        const auto eq = val.find('=');
+        if (eq == std::string::npos)
+          throw UsageError("--set expects KEY=VALUE, got '" + val + "'");
+        std::string key = val.substr(0, eq);
+        if (key.empty())
+          throw UsageError("--set expects KEY=VALUE, got an empty key in '" + val + "'");
+        if (!set_keys.insert(key).second)
+          throw UsageError("parameter '" + key + "' is set twice");
+        o.sets.emplace_back(std::move(key), val.substr(eq + 1));
+      } else if (opt == "--seed") {
+        if (o.seed) throw UsageError("--seed given twice");
+        o.seed = parse_uint("--seed", val);
+      } else if (opt == "--seed0") {
+        if (o.seed0) throw UsageError("--seed0 given twice");
+        o.seed0 = parse_uint("--seed0", val);
+      } else if (opt == "--runs") {
+        if (o.runs) throw UsageError("--runs given twice");
+        o.runs = parse_uint("--runs", val);
+        if (*o.runs < 1 || *o.runs > kMaxRuns)
+          throw UsageError("--runs must be between 1 and " + std::to_string(kMaxRuns) +
+                           ", got " + val);
+      } else if (opt == "--out") {
+        if (o.out_dir) throw UsageError("--out given twice");
+        if (val.empty()) throw UsageError("--out needs a directory");
+        o.out_dir = val;
+      }
+      continue;
+    }
+    if (!takes_name) throw UsageError("'" + command + "' takes no argument, got '" + a + "'");
+    if (have_name) throw UsageError("unexpected argument '" + a + "' (one scenario at a time)");
+    o.scenario = a;
+    have_name = true;
+  }
+  if (o.help) return o;
+  if (takes_name && !have_name) throw UsageError("'" + command + "' needs a scenario NAME");
+  if (is_mc) {
+    if (!o.runs) throw UsageError("montecarlo needs --runs R");
+    const std::uint64_t s0 = o.seed0.value_or(1);
+    if (s0 > std::numeric_limits<std::uint64_t>::max() - (*o.runs - 1))
+      throw UsageError("--seed0 + --runs overflows the seed range");
+  }
+  return o;
+}
+
+std::string usage() {
+  return R"(usage: adcs-sim COMMAND [ARGS]
+
+commands:
+  list                      scenario names, one a line
+  describe NAME             NAME's description and parameters (default, unit, source)
+  run NAME [--set KEY=VALUE]... [--seed N] [--out DIR]
+                            run once; writes DIR/NAME.csv (time series) and DIR/NAME.json
+                            (parameters used, metrics, claims, plots)
+  montecarlo NAME --runs R [--seed0 S] [--out DIR] [--set KEY=VALUE]...
+                            R runs with seeds S..S+R-1; writes per-run metrics to
+                            DIR/NAME-montecarlo.csv and min/median/max to NAME-montecarlo.json
+  help                      this text
+
+options:
+  --set KEY=VALUE  override a parameter (repeatable, each KEY once). VALUE is a number
+                   (1e-3, -2, 0.5), a vector [a,b,c], a matrix [[a,b],[c,d]] (row-major)
+                   or a name (adams). Every scenario has duration_s and control_period_s.
+  --seed N         random seed of run (default 0)
+  --runs R         number of Monte Carlo runs (required)
+  --seed0 S        first Monte Carlo seed (default 1)
+  --out DIR        output directory (default out; created if missing)
+  Options also accept the form --opt=VALUE.
+
+The last line on stdout is one JSON object: {"scenario": ..., "seed": N, "metrics": {...}}
+for run, {"scenario": ..., "runs": R, "seed0": S, "metrics": {m: {"min", "median", "max"}}}
+for montecarlo. Errors are one line on stderr; exit status 2 for a bad command line (unknown
+scenario, option, parameter or value), 1 if the simulation or writing fails. Either way no
+output file is left behind.
+)";
+}
+
+int run_cli(const std::vector<std::string>& args, const Catalog& catalog, std::ostream& out,
+            std::ostream& err) {
+  const auto fail = [&](int status, const std::string& msg) {
+    out.flush();
+    err << kProg << ": error: " << one_line(msg) << std::endl;
+    return status;
+  };
+  try {
+    if (args.empty()) return fail(kExitUsage, std::string("no command (see '") + kProg + " help')");
+    const std::string& cmd = args.front();
+    if (cmd == "help" || cmd == "--help" || cmd == "-h") {
+      out << usage();
+      out.flush();
+      return kExitOk;
+    }
+    if (cmd != "list" && cmd != "describe" && cmd != "run" && cmd != "montecarlo")
+      return fail(kExitUsage, "unknown command '" + cmd + "' (see '" + kProg + " help')");
+    const Options o = parse_options(cmd, std::vector<std::string>(args.begin() + 1, args.end()));
+    if (o.help) {
+      out << usage();
+      out.flush();
+      return kExitOk;
+    }
+    if (cmd == "list") return cmd_list(o, catalog, out);
+    if (cmd == "describe") return cmd_describe(o, catalog, out);
+    if (cmd == "run") return cmd_run(o, catalog, out);
+    return cmd_montecarlo(o, catalog, out, err);
+  } catch (const UsageError& e) {
+    return fail(kExitUsage, e.what());
+  } catch (const ParamError& e) {
+    return fail(kExitUsage, e.what());
+  } catch (const RunFailure& e) {
+    return fail(kExitFailure, e.what());
+  } catch (const IoError& e) {
+    return fail(kExitFailure, e.what());
+  } catch (const std::exception& e) {
+    return fail(kExitFailure, std::string("internal error: ") + e.what());
+  } catch (...) {
+    return fail(kExitFailure, "internal error: unknown exception");
+  }
+}
+
+int cli_main(int argc, char** argv) {
+  install_cleanup_signal_handlers();
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) args.emplace_back(argv[i]);
+  try {
+    return run_cli(args, Catalog::registered(), std::cout, std::cerr);
+  } catch (const std::exception& e) {  // e.g. a scenario factory throwing
+    std::cerr << kProg << ": error: internal error: " << one_line(e.what()) << std::endl;
+    return kExitFailure;
+  } catch (...) {
+    std::cerr << kProg << ": error: internal error while starting" << std::endl;
+    return kExitFailure;
+  }
+}
+
+}  // namespace adcs::sim::cli

@@ -1,0 +1,66 @@
+#pragma once
+// The scenario interface (ground code). A scenario declares every parameter it reads (with
+// default, unit and source), runs, and returns metrics, claim rows for out/REPORT.md and plot
+// specifications for tools/plot.py. Scenarios are listed in src/scenarios/registry.cpp.
+//
+// Rules a scenario follows (adcs-sim relies on them):
+//  - declare() declares at least `duration_s` and `control_period_s` (numbers, seconds).
+//  - run() reads parameters only through the ParamSet, uses ctx.seed for all randomness,
+//    writes its time series to ctx.csv_path (a temporary file adcs-sim renames into place)
+//    unless ctx.csv_path is empty, and prints nothing to stdout when ctx.quiet.
+//  - run() throws ParamError for an invalid parameter value (adcs-sim exits 2) and any other
+//    exception for a simulation failure (adcs-sim exits 1). Either way no output is kept.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scenarios/params.hpp"
+
+namespace adcs::sim {
+
+//! One row of the claims table: a paper claim we reproduce ("paper") or a check of ours
+//! ("check"). `holds` is empty when the row is informative only.
+struct Claim {
+  std::string kind;  // "paper" or "check"
+  std::string claim, paper_value, ours;
+  std::optional<bool> holds;
+};
+
+//! One figure tools/plot.py draws from the run's CSV: columns `y` against column `x`.
+struct PlotSpec {
+  std::string file, title, x = "t";
+  std::vector<std::string> y;
+  std::string ylabel;
+  bool logy = false;
+};
+
+struct RunContext {
+  //! Where the scenario writes its time series (a temporary path); empty => don't write one.
+  std::string csv_path;
+  std::uint64_t seed = 0;
+  //! Monte Carlo runs: no chatter on stdout.
+  bool quiet = false;
+};
+
+struct RunResult {
+  std::vector<std::pair<std::string, double>> metrics;  // ordered; non-finite => JSON null
+  std::vector<Claim> claims;
+  std::vector<PlotSpec> plots;
+};
+
+class Scenario {
+ public:
+  virtual ~Scenario() = default;
+  //! Lower-case letters, digits and '-' (used in file names).
+  virtual std::string name() const = 0;
+  virtual std::string description() const = 0;
+  //! Every parameter, with default, unit and source.
+  virtual void declare(ParamSet& params) const = 0;
+  //! May throw (see the rules above).
+  virtual RunResult run(const ParamSet& params, const RunContext& ctx) const = 0;
+};
+
+}  // namespace adcs::sim

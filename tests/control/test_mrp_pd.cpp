@@ -1,0 +1,112 @@
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+
+#include "adcs/control/mrp_pd.hpp"
+
+namespace {
+using Ctrl = adcs::MrpPd<4>;
+
+Ctrl::Params params() {
+  Ctrl::Params p;
+  p.K = 3.0;
+  p.P = adcs::Vec3(40, 35, 30).asDiagonal();
+  p.J_rw_B = adcs::Vec3(900, 800, 600).asDiagonal();
+  const double s = 1.0 / std::sqrt(3.0);
+  p.G_s_B << 1, 0, 0, s, 0, 1, 0, s, 0, 0, 1, s;
+  p.J_s.setConstant(0.1);
+  return p;
+}
+
+TEST(MrpPd, ProportionalAndDerivativeSigns) {
+  Ctrl c(params());
+  Ctrl::Measurement m;
+  m.sigma_BN << 0.1, 0, 0;
+  adcs::AttitudeReference r;
+  adcs::MrpPdCommand out;
+  ASSERT_EQ(c.step(m, r, out), adcs::Status::ok);
+  EXPECT_NEAR(out.L_r_B(0), -0.3, 1e-15);
+  EXPECT_NEAR(out.L_r_B.tail<2>().norm(), 0.0, 1e-15);
+  m.sigma_BN.setZero();
+  m.omega_BN_B << 0, 0.01, 0;
+  ASSERT_EQ(c.step(m, r, out), adcs::Status::ok);
+  // -P omega plus the gyroscopic term omega x H (zero here: H parallel to omega? no wheels spin)
+  EXPECT_NEAR(out.L_r_B(1), -0.35, 1e-12);
+}
+
+TEST(MrpPd, GyroscopicCompensationCancelsWheelMomentumCoupling) {
+  Ctrl c(params());
+  Ctrl::Measurement m;
+  m.sigma_BN.setZero();
+  m.omega_BN_B << 0.0, 0.0, 0.0;
+  m.Omega << 100, 0, 0, 0;
+  adcs::AttitudeReference r;
+  adcs::MrpPdCommand out;
+  ASSERT_EQ(c.step(m, r, out), adcs::Status::ok);
+  EXPECT_LT(out.L_r_B.norm(), 1e-15);  // at rest, on target: nothing to do
+  m.omega_BN_B << 0.0, 0.0, 0.001;
+  ASSERT_EQ(c.step(m, r, out), adcs::Status::ok);
+  const adcs::Vec3 H = params().J_rw_B * m.omega_BN_B +
+                       params().G_s_B * (params().J_s.cwiseProduct(
+                                            params().G_s_B.transpose() * m.omega_BN_B + m.Omega));
+  const adcs::Vec3 expected = -params().P * m.omega_BN_B + m.omega_BN_B.cross(H);
+  EXPECT_LT((out.L_r_B - expected).norm(), 1e-15);
+}
+
+TEST(MrpPd, TracksAroundTheReferenceNotTheOrigin) {
+  Ctrl c(params());
+  Ctrl::Measurement m;
+  m.sigma_BN << 0.1, 0.2, -0.3;
+  adcs::AttitudeReference r;
+  r.sigma_RN = m.sigma_BN;
+  adcs::MrpPdCommand out;
+  ASSERT_EQ(c.step(m, r, out), adcs::Status::ok);
+  EXPECT_LT(out.sigma_BR.norm(), 1e-15);
+  EXPECT_LT(out.L_r_B.norm(), 1e-14);
+}
+
+TEST(MrpPd, NonFiniteInputHoldsLastCommandAndResetClears) {
+  Ctrl c(params());
+  Ctrl::Measurement m;
+  m.sigma_BN << 0.1, 0, 0;
+  adcs::AttitudeReference r;
+  adcs::MrpPdCommand good, out;
+  ASSERT_EQ(c.step(m, r, good), adcs::Status::ok);
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Ctrl::Measurement mb = m;
+    mb.Omega(2) = bad;
+    EXPECT_EQ(c.step(mb, r, out), adcs::Status::non_finite_input);
+    EXPECT_EQ(out.L_r_B, good.L_r_B);
+    adcs::AttitudeReference rb;
+    rb.domega_RN_N(0) = bad;
+    EXPECT_EQ(c.step(m, rb, out), adcs::Status::non_finite_input);
+    EXPECT_TRUE(adcs::all_finite(out.L_r_B));
+  }
+  // Finite but absurd input overflows: out_of_range, still finite output.
+  Ctrl::Measurement huge = m;
+  huge.omega_BN_B << 1e300, 1e300, -1e300;
+  EXPECT_EQ(c.step(huge, r, out), adcs::Status::out_of_range);
+  EXPECT_TRUE(adcs::all_finite(out.L_r_B));
+  c.reset();
+  Ctrl::Measurement mb = m;
+  mb.sigma_BN(0) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(c.step(mb, r, out), adcs::Status::non_finite_input);
+  EXPECT_EQ(out.L_r_B, adcs::Vec3::Zero());
+}
+
+TEST(MrpPd, DeterministicBitForBit) {
+  Ctrl a(params()), b(params());
+  Ctrl::Measurement m;
+  m.sigma_BN << 0.3, -0.1, 0.2;
+  m.omega_BN_B << 0.01, 0.02, -0.03;
+  m.Omega << 1, 2, 3, 4;
+  adcs::AttitudeReference r;
+  r.sigma_RN << 0.1, 0.0, 0.05;
+  r.omega_RN_N << 0.001, 0.0, 0.0;
+  adcs::MrpPdCommand oa, ob;
+  ASSERT_EQ(a.step(m, r, oa), adcs::Status::ok);
+  ASSERT_EQ(b.step(m, r, ob), adcs::Status::ok);
+  EXPECT_EQ(std::memcmp(oa.L_r_B.data(), ob.L_r_B.data(), sizeof(double) * 3), 0);
+}
+}  // namespace

@@ -1,0 +1,34 @@
+// Instantiates every flight template with concrete sizes and calls the functions a flight
+// program would, so the Cortex-M7 compile check sees real code, not just declarations.
+// Keep in step with include/adcs (one block per concept).
+#include "adcs/adcs.hpp"
+
+namespace adcs {
+template class RigidBodyRw<4>;
+template class RwTorqueAllocator<4>;
+template class MrpPd<4>;
+template class MrpPd<3>;
+template Status right_pinv_solve<3, 7>(const Mat<3, 7>&, const Vec<3>&, Vec<7>&, PinvInfo*) noexcept;
+template Status right_pinv<3, 4>(const Mat<3, 4>&, Mat<4, 3>&, PinvInfo*) noexcept;
+template Status damped_right_pinv_solve<3, 7>(const Mat<3, 7>&, const Vec<3>&, Vec<7>&,
+                                              const DampingParams&, PinvInfo*) noexcept;
+template Status solve_continuous_lyapunov<6>(const Mat<6, 6>&, const Mat<6, 6>&, Mat<6, 6>&) noexcept;
+template Status solve_continuous_lyapunov<12>(const Mat<12, 12>&, const Mat<12, 12>&,
+                                              Mat<12, 12>&) noexcept;
+template Status place_double_integrator<3>(const AxisPoles<3>&, Mat<3, 6>&) noexcept;
+}  // namespace adcs
+
+// A flight-style entry point that exercises the non-template functions.
+extern "C" int adcs_target_smoke(const double* in, double* out) {
+  const adcs::Vec3 sigma(in[0], in[1], in[2]);
+  const adcs::Mat3 C = adcs::mrp_to_dcm(sigma);
+  const adcs::Vec3 back = adcs::dcm_to_mrp(C);
+  adcs::Mat3 F;
+  const adcs::Status s = adcs::euler123_F(adcs::dcm_to_euler123(C), F);
+  const adcs::Mat3 Gd = adcs::mrp_G_dot(sigma, back) + adcs::mrp_G_inv(sigma) +
+                        adcs::euler123_G_dot(back, sigma) + adcs::euler321_G(back);
+  adcs::Mat3 F321;
+  const adcs::Status s2 = adcs::euler321_F(adcs::dcm_to_euler321(C), F321);
+  out[0] = Gd.sum() + F.sum() + F321.sum();
+  return static_cast<int>(s) + static_cast<int>(s2);
+}

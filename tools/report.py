@@ -1,0 +1,284 @@
+#!/usr/bin/python3
+"""Summarise `adcs-sim run` outputs in OUT_DIR/REPORT.md.
+
+usage: report.py [--check] OUT_DIR
+
+Reads every OUT_DIR/*.json (format in docs/CONTRACTS.md, "Output files") and writes
+OUT_DIR/REPORT.md: a summary line, the paper-claims table ("kind": "paper"), the
+harness-checks table ("kind": "check"), then per scenario its metrics, seed, parameters and
+plots. The file carries no date, so identical inputs give an identical report.
+
+Exit status: 0; 1 with --check if any claim has "holds": false; 2 on usage errors or if a
+JSON could not be read (the report is still written, listing the unreadable files).
+Run with /usr/bin/python3 (standard library only; uses tools/plot.py to name default plots).
+"""
+
+import json
+import math
+import os
+import sys
+
+sys.dont_write_bytecode = True  # keep tools/ free of __pycache__
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot  # noqa: E402  (same directory; only its stdlib parts are used here)
+
+PROG = "report.py"
+CLAIM_HEADER = "| scenario | paper claim | paper value | ours | holds? |"
+CLAIM_RULE = "|---|---|---|---|---|"
+
+
+def warn(msg):
+    print(f"{PROG}: warning: {msg}", file=sys.stderr)
+
+
+def fmt_num(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if math.isnan(v):
+            return "nan"
+        return "%.6g" % v
+    return str(v)
+
+
+def fmt_value(v):
+    """Parameter/metric value: numbers %.6g, lists [a, b], nested lists [[..], [..]]."""
+    if v is None:
+        return "n/a"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(fmt_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{k}: {fmt_value(x)}" for k, x in v.items()) + "}"
+    return fmt_num(v)
+
+
+def cell(v):
+    """Text safe inside a markdown table cell."""
+    if v is None:
+        s = ""
+    elif isinstance(v, str):
+        s = v
+    else:
+        s = fmt_value(v)
+    s = " ".join(s.split())
+    return s.replace("|", "\\|")
+
+
+def holds_text(h):
+    if h is True:
+        return "yes"
+    if h is False:
+        return "**NO**"
+    return "n/a"
+
+
+def md_alt(s):
+    return " ".join(str(s).split()).replace("[", "(").replace("]", ")")
+
+
+class Scenario:
+    def __init__(self, stem, meta):
+        self.stem = stem
+        self.meta = meta
+        sc = meta.get("scenario")
+        self.name = sc if isinstance(sc, str) and sc else stem
+
+    def claims(self, kind):
+        out = []
+        for c in self.meta.get("claims") or []:
+            if isinstance(c, dict) and c.get("kind") == kind:
+                out.append(c)
+        return out
+
+    def all_claims(self):
+        return [c for c in (self.meta.get("claims") or []) if isinstance(c, dict)]
+
+
+def load(out_dir):
+    scenarios, unreadable = [], []
+    def order(fn):  # NAME-montecarlo.json right after NAME.json
+        stem = fn[:-len(".json")]
+        mc = stem.endswith("-montecarlo")
+        return (stem[:-len("-montecarlo")] if mc else stem, mc)
+
+    for fn in sorted((f for f in os.listdir(out_dir) if f.endswith(".json")), key=order):
+        path = os.path.join(out_dir, fn)
+        try:
+            meta = plot.load_json(path)
+        except plot.InputError as e:
+            print(f"{PROG}: error: {e}", file=sys.stderr)
+            unreadable.append((fn, str(e)))
+            continue
+        claims = meta.get("claims")
+        if claims is not None and not isinstance(claims, list):
+            warn(f"{fn}: \"claims\" is not a list; ignored")
+            meta["claims"] = []
+        scenarios.append(Scenario(fn[:-len(".json")], meta))
+    return scenarios, unreadable
+
+
+def claims_table(lines, scenarios, kind, empty_note):
+    lines.append(CLAIM_HEADER)
+    lines.append(CLAIM_RULE)
+    n = 0
+    for s in scenarios:
+        for c in s.claims(kind):
+            lines.append("| " + " | ".join([
+                cell(s.name), cell(c.get("claim")), cell(c.get("paper_value")),
+                cell(c.get("ours")), holds_text(c.get("holds"))]) + " |")
+            n += 1
+    if n == 0:
+        lines.append("")
+        lines.append(empty_note)
+    lines.append("")
+
+
+def scenario_section(lines, out_dir, s):
+    meta = s.meta
+    title = s.name if s.name == s.stem else f"{s.name} (`{s.stem}.json`)"
+    lines.append(f"### {title}")
+    lines.append("")
+    desc = meta.get("description")
+    if isinstance(desc, str) and desc.strip():
+        lines.append(" ".join(desc.split()))
+        lines.append("")
+    lines.append(f"- seed: {fmt_value(meta.get('seed'))}")
+    csv = meta.get("csv")
+    if isinstance(csv, str) and csv:
+        lines.append(f"- data: [{csv}]({csv})")
+    lines.append("")
+
+    metrics = meta.get("metrics")
+    lines.append("| metric | value |")
+    lines.append("|---|---|")
+    if isinstance(metrics, dict) and metrics:
+        for k, v in metrics.items():
+            lines.append(f"| {cell(k)} | {cell(fmt_value(v))} |")
+    else:
+        lines.append("| (none) | |")
+    lines.append("")
+
+    params = meta.get("parameters")
+    if isinstance(params, dict) and params:
+        lines.append("Parameters:")
+        lines.append("")
+        for k, p in params.items():
+            if isinstance(p, dict):
+                val = fmt_value(p.get("value"))
+                unit = p.get("unit")
+                unit = f" {unit}" if isinstance(unit, str) and unit not in ("", "-") else ""
+                src = p.get("source")
+                src = f" ({' '.join(src.split())})" if isinstance(src, str) and src else ""
+                lines.append(f"- `{k}` = {val}{unit}{src}")
+            else:
+                lines.append(f"- `{k}` = {fmt_value(p)}")
+        lines.append("")
+
+    # Plots: the JSON's specs, or the defaults tools/plot.py derives from the CSV header.
+    specs = []
+    try:
+        specs = plot.specs_for(out_dir, s.stem, meta)
+    except plot.InputError as e:
+        if meta.get("plots") or not s.stem.endswith("-montecarlo"):
+            warn(f"{s.stem}.json: no plots listed: {e}")
+    imgs = []
+    for spec in specs:
+        fn = spec.get("file")
+        if not isinstance(fn, str) or not fn:
+            continue
+        fn = os.path.basename(fn)
+        alt = md_alt(spec.get("title") or fn)
+        if os.path.isfile(os.path.join(out_dir, fn)):
+            imgs.append(f"![{alt}]({fn})")
+        else:
+            imgs.append(f"- `{fn}` ({alt}): not generated; run `tools/plot.py`")
+    if imgs:
+        lines.append("Plots:")
+        lines.append("")
+        for img in imgs:
+            lines.append(img)
+            lines.append("")
+
+
+def build(out_dir):
+    scenarios, unreadable = load(out_dir)
+    claims = [c for s in scenarios for c in s.all_claims()]
+    n = len(claims)
+    n_yes = sum(1 for c in claims if c.get("holds") is True)
+    n_no = sum(1 for c in claims if c.get("holds") is False)
+    n_na = n - n_yes - n_no
+
+    lines = ["# adcs simulation report", ""]
+    lines.append("Generated by `tools/report.py` from the `adcs-sim run NAME --out DIR` outputs "
+                 "(`NAME.json`, `NAME.csv`, plots by `tools/plot.py`) in this directory.")
+    lines.append("")
+    summary = f"**Summary: {n} claims, {n_yes} hold, {n_no} do not"
+    summary += f", {n_na} n/a.**" if n_na else ".**"
+    summary += f" Scenarios: {len(scenarios)}."
+    lines.append(summary)
+    lines.append("")
+    if unreadable:
+        lines.append("**Unreadable inputs:**")
+        lines.append("")
+        for fn, msg in unreadable:
+            lines.append(f"- `{fn}`: {' '.join(msg.split())}")
+        lines.append("")
+
+    lines.append("## Paper claims")
+    lines.append("")
+    claims_table(lines, scenarios, "paper",
+                 "No paper scenarios are registered yet; the machinery is in place "
+                 "(claims with `\"kind\": \"paper\"` appear here).")
+    lines.append("## Harness checks")
+    lines.append("")
+    claims_table(lines, scenarios, "check",
+                 "No harness checks reported (claims with `\"kind\": \"check\"` appear here).")
+    other = sorted({str(c.get("kind")) for c in claims} - {"paper", "check"})
+    if other:
+        lines.append(f"Claims of other kinds ({', '.join(other)}) are counted in the summary "
+                     "but not tabulated.")
+        lines.append("")
+
+    lines.append("## Scenario metrics")
+    lines.append("")
+    if not scenarios:
+        lines.append("No scenario outputs found.")
+        lines.append("")
+    for s in scenarios:
+        scenario_section(lines, out_dir, s)
+    while lines and lines[-1] == "":
+        lines.pop()
+    return "\n".join(lines) + "\n", n_no, bool(unreadable)
+
+
+def main(argv):
+    args = argv[1:]
+    if any(a in ("-h", "--help") for a in args):
+        print(__doc__.strip())
+        return 0
+    check = "--check" in args
+    rest = [a for a in args if a != "--check"]
+    if len(rest) != 1 or rest[0].startswith("-"):
+        print("usage: report.py [--check] OUT_DIR", file=sys.stderr)
+        return 2
+    out_dir = rest[0]
+    if not os.path.isdir(out_dir):
+        print(f"{PROG}: error: {out_dir}: not a directory", file=sys.stderr)
+        return 2
+    text, n_no, bad_input = build(out_dir)
+    path = os.path.join(out_dir, "REPORT.md")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+    print(path)
+    if bad_input:
+        return 2
+    if check and n_no:
+        print(f"{PROG}: {n_no} claim(s) do not hold", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# "Run the main job" (README command 1):
+#   install missing Debian packages, build Release, run every registered scenario with its
+#   defaults, and write out/: NAME.csv, NAME.json, PNG plots, and out/REPORT.md (paper claim |
+#   paper value | ours | holds?).
+# Usage: tools/run-main.sh [OUT_DIR]   (default: out)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+out=${1:-"$root/out"}
+build="$root/build"
+jobs=$(nproc 2>/dev/null || echo 2)
+
+bash "$root/tools/setup-deps.sh"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build "$build" --target adcs-sim -j "$jobs"
+sim="$build/src/adcs-sim"
+
+mkdir -p "$out"
+status=0
+while IFS= read -r name; do
+  [ -n "$name" ] || continue
+  echo "== $name"
+  start=$(date +%s)
+  if ! "$sim" run "$name" --out "$out" | tail -n 1; then
+    echo "run-main: scenario $name failed" >&2
+    status=1
+  fi
+  echo "   ($(( $(date +%s) - start )) s)"
+done < <("$sim" list)
+
+/usr/bin/python3 "$root/tools/plot.py" "$out"
+/usr/bin/python3 "$root/tools/report.py" "$out"
+echo "run-main: wrote $out/REPORT.md"
+exit $status
