@@ -132,6 +132,19 @@ std::string csv_number(double x) {
 
 // ---- commands -------------------------------------------------------------------------------
 
+//! Renames the CSV and the JSON into place together: if the JSON cannot be committed, the CSV
+//! is taken back, so a run leaves both files or neither.
+void commit_outputs(TempFile& csv, TempFile& json, OutputDir& dir) {
+  csv.commit();
+  try {
+    json.commit();
+  } catch (...) {
+    csv.uncommit();
+    throw;
+  }
+  dir.keep();
+}
+
 int cmd_list(const Options&, const Catalog& catalog, std::ostream& out) {
   for (const Scenario* s : catalog.scenarios) out << s->name() << '\n';
   out.flush();
@@ -208,14 +221,7 @@ int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
   w.end_object();
   json.write(w.str() + "\n");
 
-  csv.commit();
-  try {
-    json.commit();
-  } catch (...) {
-    csv.uncommit();
-    throw;
-  }
-  dir.keep();
+  commit_outputs(csv, json, dir);
 
   JsonWriter line;
   line.begin_object();
@@ -328,14 +334,7 @@ int cmd_montecarlo(const Options& o, const Catalog& catalog, std::ostream& out,
   w.end_object();
   json.write(w.str() + "\n");
 
-  csv.commit();
-  try {
-    json.commit();
-  } catch (...) {
-    csv.uncommit();
-    throw;
-  }
-  dir.keep();
+  commit_outputs(csv, json, dir);
 
   JsonWriter line;
   line.begin_object();

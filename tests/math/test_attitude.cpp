@@ -636,6 +636,24 @@ TEST(Euler123, FIsSingularAtGimbalLockAndLeavesOutputUntouched) {
   EXPECT_TRUE(adcs::all_finite(adcs::euler123_G(Vec3(0.3, kPi / 2, -0.7))));
 }
 
+TEST(Euler, FRejectsNonFiniteAnglesAndLeavesOutputUntouched) {
+  // Status contract (core/status.hpp): NaN/Inf input -> non_finite_input, outputs held. Before
+  // the fix a NaN pitch was reported as `singular` (cos(NaN) fails the gimbal-lock test).
+  const Mat3 sentinel = Mat3::Constant(5.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    for (double bad : {kNaN, inf, -inf}) {
+      Vec3 a(0.1, 0.2, 0.3);
+      a(i) = bad;
+      Mat3 F = sentinel;
+      EXPECT_EQ(adcs::euler123_F(a, F), Status::non_finite_input) << i << " " << bad;
+      EXPECT_EQ(F, sentinel);
+      EXPECT_EQ(adcs::euler321_F(a, F), Status::non_finite_input) << i << " " << bad;
+      EXPECT_EQ(F, sentinel);
+    }
+  }
+}
+
 TEST(Euler321, DcmMatchesSchaubAndRoundTrips) {
   Rng rng(0x7101);
   for (int k = 0; k < kSamples; ++k) {

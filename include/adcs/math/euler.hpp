@@ -42,8 +42,9 @@ inline Mat3 euler123_G(const Vec3& angles) noexcept {
 }
 
 //! theta_dot = F(theta) omega. Returns Status::singular (F untouched) at |cos(theta)| <
-//! kEulerSingularCos.   seed 002 eq. (3)
+//! kEulerSingularCos, non_finite_input (F untouched) for NaN/Inf angles.   seed 002 eq. (3)
 inline Status euler123_F(const Vec3& angles, Mat3& F) noexcept {
+  if (!all_finite(angles)) return Status::non_finite_input;
   const double ct = std::cos(angles(1)), st = std::sin(angles(1));
   if (!(std::abs(ct) >= kEulerSingularCos)) return Status::singular;
   const double cp = std::cos(angles(2)), sp = std::sin(angles(2));
@@ -91,8 +92,10 @@ inline Mat3 euler321_G(const Vec3& ypr) noexcept {
   return G;
 }
 
-//! ypr_dot = F321(ypr) omega (Schaub's B matrix). Status::singular at gimbal lock.
+//! ypr_dot = F321(ypr) omega (Schaub's B matrix). Status::singular at gimbal lock,
+//! non_finite_input for NaN/Inf angles (F untouched in both cases).
 inline Status euler321_F(const Vec3& ypr, Mat3& F) noexcept {
+  if (!all_finite(ypr)) return Status::non_finite_input;
   const double ct = std::cos(ypr(1)), st = std::sin(ypr(1));
   if (!(std::abs(ct) >= kEulerSingularCos)) return Status::singular;
   const double cf = std::cos(ypr(2)), sf = std::sin(ypr(2));

@@ -40,20 +40,33 @@ inline void fill_singular_values(const Mat<R, R>& M, PinvInfo& info) noexcept {
 }
 }  // namespace detail
 
+namespace detail {
+//! Shared front end of the exact inverses: finiteness, conditioning report and refusal, LDLT of
+//! X X^T. Returns ok with `ldlt` factored, or the status to return (outputs untouched).
+template <int R, int C>
+inline Status factor_gram(const Mat<R, C>& X, Eigen::LDLT<Mat<R, R>>& ldlt,
+                          PinvInfo* info) noexcept {
+  static_assert(R <= C, "right pseudo-inverse needs a fat matrix (rows <= cols)");
+  if (!all_finite(X)) return Status::non_finite_input;
+  const Mat<R, R> M = X * X.transpose();
+  PinvInfo local;
+  fill_singular_values<R, C>(M, local);
+  if (info) *info = local;
+  if (!(local.condition <= kPinvMaxCondition)) return Status::singular;
+  ldlt.compute(M);
+  return ldlt.info() == Eigen::Success ? Status::ok : Status::singular;
+}
+}  // namespace detail
+
 //! u = X^T (X X^T)^-1 v through an LDLT of the SPD matrix X X^T.
 //! Returns non_finite_input or singular (cond(X X^T) > kPinvMaxCondition) with u untouched.
 template <int R, int C>
 Status right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
                         PinvInfo* info = nullptr) noexcept {
-  static_assert(R <= C, "right pseudo-inverse needs a fat matrix (rows <= cols)");
-  if (!all_finite(X) || !all_finite(v)) return Status::non_finite_input;
-  const Mat<R, R> M = X * X.transpose();
-  PinvInfo local;
-  detail::fill_singular_values<R, C>(M, local);
-  if (info) *info = local;
-  if (!(local.condition <= kPinvMaxCondition)) return Status::singular;
-  const Eigen::LDLT<Mat<R, R>> ldlt(M);
-  if (ldlt.info() != Eigen::Success) return Status::singular;
+  if (!all_finite(v)) return Status::non_finite_input;
+  Eigen::LDLT<Mat<R, R>> ldlt;
+  const Status s = detail::factor_gram<R, C>(X, ldlt, info);
+  if (s != Status::ok) return s;
   const Vec<R> y = ldlt.solve(v);
   u.noalias() = X.transpose() * y;
   return Status::ok;
@@ -62,15 +75,9 @@ Status right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
 //! The matrix X^+ = X^T (X X^T)^-1 itself (for tests and offline allocation matrices).
 template <int R, int C>
 Status right_pinv(const Mat<R, C>& X, Mat<C, R>& X_pinv, PinvInfo* info = nullptr) noexcept {
-  static_assert(R <= C, "right pseudo-inverse needs a fat matrix (rows <= cols)");
-  if (!all_finite(X)) return Status::non_finite_input;
-  const Mat<R, R> M = X * X.transpose();
-  PinvInfo local;
-  detail::fill_singular_values<R, C>(M, local);
-  if (info) *info = local;
-  if (!(local.condition <= kPinvMaxCondition)) return Status::singular;
-  const Eigen::LDLT<Mat<R, R>> ldlt(M);
-  if (ldlt.info() != Eigen::Success) return Status::singular;
+  Eigen::LDLT<Mat<R, R>> ldlt;
+  const Status s = detail::factor_gram<R, C>(X, ldlt, info);
+  if (s != Status::ok) return s;
   X_pinv.noalias() = X.transpose() * ldlt.solve(Mat<R, R>::Identity());
   return Status::ok;
 }
