@@ -93,8 +93,10 @@ struct DampingParams {
 };
 
 //! u = X^T (X X^T + lambda^2 I)^-1 v. Returns ok (no damping needed), ill_conditioned (damped,
-//! u usable), or non_finite_input / singular (u untouched; singular only when lambda_max = 0
-//! and X X^T cannot be factored).
+//! u usable), or non_finite_input / singular with u untouched. singular means the damped Gram
+//! matrix is numerically singular (LDLT rcond <= 1e-16): possible only with lambda_max = 0 near
+//! rank loss, or when sigma_max^2 / lambda^2 exceeds ~1e16 (e.g. sigma_max >~ 1e6 with the
+//! default damping) -- scale X or raise lambda_max then.
 template <int R, int C>
 Status damped_right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
                                const DampingParams& params, PinvInfo* info = nullptr) noexcept {
