@@ -115,7 +115,7 @@ TEST(NoMalloc, PlantDerivativeAndMathKernels) {
                                   {{{-0.3, 0.3}, {-0.3, -0.3}}},
                                   {{{-0.2 * std::sqrt(2.0), 0}, {-0.3 * std::sqrt(2.0), 0}}}}};
   long allocs = 0;
-  adcs::Status s[4];
+  adcs::Status s[7];
   {
     NoAllocScope scope;
     plant.derivative(0.0, x, u, xdot);
@@ -126,6 +126,19 @@ TEST(NoMalloc, PlantDerivativeAndMathKernels) {
     s[2] = adcs::place_double_integrator<3>(poles, K);
     A1 = adcs::double_integrator_closed_loop<3>(K);
     s[3] = adcs::solve_continuous_lyapunov<6>(A1, adcs::Mat6::Identity(), P);
+    // Per-step kernels of the adaptive laws (seed 001): projection, safeguard, steering.
+    adcs::Vec<6> th = adcs::Vec<6>::Constant(0.2), dth;
+    s[4] = adcs::smooth_projection<6>(th, adcs::Vec<6>::Ones(), adcs::ProjectionParams{}, dth);
+    (void)adcs::radial_safeguard<6>(th, 0.15);
+    s[5] = adcs::usable(adcs::steer<7>(X, v, adcs::SteeringParams{}, u7)) ? adcs::Status::ok
+                                                                        : adcs::Status::singular;
+    const adcs::SinusoidalRateReference ref;
+    const adcs::MrpReferenceSample rs = ref.sample(12.0, v * 0.1);
+    s[6] = adcs::all_finite(rs.sigma_ddot) ? adcs::Status::ok : adcs::Status::non_finite_input;
+    // The seed 001 truth plant's right-hand side (run inside CVODE's callback).
+    static const adcs::VscmgFullPlant<4, 3> vscmg(adcs::vscmg_params_A_REF());
+    adcs::VscmgFullPlant<4, 3>::State xv = adcs::VscmgFullPlant<4, 3>::State::Constant(0.05), xvd;
+    vscmg.derivative(0.0, xv, adcs::VscmgFullPlant<4, 3>::Input::Constant(1e-3), xvd);
     allocs = scope.allocations();
   }
   EXPECT_EQ(allocs, 0);

@@ -5,6 +5,9 @@
 
 namespace adcs {
 template class RigidBodyRw<4>;
+template class VscmgFullPlant<4, 3>;
+template class VscmgCtrlPlant<4, 3>;
+template struct VscmgGeometry<4, 3>;
 template class RwTorqueAllocator<4>;
 template class MrpPd<4>;
 template class MrpPd<3>;
@@ -16,6 +19,13 @@ template Status solve_continuous_lyapunov<6>(const Mat<6, 6>&, const Mat<6, 6>&,
 template Status solve_continuous_lyapunov<12>(const Mat<12, 12>&, const Mat<12, 12>&,
                                               Mat<12, 12>&) noexcept;
 template Status place_double_integrator<3>(const AxisPoles<3>&, Mat<3, 6>&) noexcept;
+template Status smooth_projection<6>(const Vec<6>&, const Vec<6>&, const ProjectionParams&, Vec<6>&,
+                                     bool*) noexcept;
+template Status smooth_projection<3>(const Vec<3>&, const Vec<3>&, const ProjectionParams&, Vec<3>&,
+                                     bool*) noexcept;
+template bool radial_safeguard<6>(Vec<6>&, double) noexcept;
+template Status steer<7>(const Mat<3, 7>&, const Vec3&, const SteeringParams&, Vec<7>&,
+                         SteeringInfo*) noexcept;
 }  // namespace adcs
 
 // A flight-style entry point that exercises the non-template functions.
@@ -29,6 +39,8 @@ extern "C" int adcs_target_smoke(const double* in, double* out) {
                         adcs::euler123_G_dot(back, sigma) + adcs::euler321_G(back);
   adcs::Mat3 F321;
   const adcs::Status s2 = adcs::euler321_F(adcs::dcm_to_euler321(C), F321);
-  out[0] = Gd.sum() + F.sum() + F321.sum();
+  const adcs::SinusoidalRateReference ref;
+  const adcs::MrpReferenceSample r = ref.sample(in[3], sigma);
+  out[0] = Gd.sum() + F.sum() + F321.sum() + r.sigma_ddot.sum();
   return static_cast<int>(s) + static_cast<int>(s2);
 }

@@ -1,0 +1,62 @@
+#pragma once
+// Smooth projection operator for adaptive laws (seed 001 eq. (26), §A.3 step 12, §A.4 #18/#19):
+//
+//   Proj(θ, Φ) = α Φ                                               if ‖θ‖² < β or θᵀΦ ≤ 0
+//   Proj(θ, Φ) = α [ Φ − ((‖θ‖² − β)/δ) (θᵀΦ/‖θ‖²) θ ]              if ‖θ‖² ≥ β and θᵀΦ > 0
+//
+// (Pomet–Praly / Krstić–Kanellakopoulos–Kokotović form.) Properties, each tested:
+//  - continuous in θ (the correction vanishes at ‖θ‖² = β);
+//  - invariance: d/dt‖θ‖² = 2αθᵀΦ(β + δ − ‖θ‖²)/δ when active, so ‖θ(0)‖² ≤ β + δ keeps
+//    ‖θ(t)‖² ≤ β + δ for the continuous law;
+//  - Lyapunov: (θ* − θ)ᵀ(αΦ − Proj) ≤ 0 whenever ‖θ*‖² ≤ β.
+// Works for any block size K. Never divides by zero: the active branch needs θᵀΦ > 0, so θ ≠ 0.
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+struct ProjectionParams {
+  double alpha = 1.0;  //!< [-] adaptation gain α (>= 0); the seed 001 law's α_G
+  double beta = 0.05;  //!< [θ units²] radius² β (> 0) beyond which the correction starts
+  double delta = 0.1;  //!< [θ units²] boundary-layer width δ (> 0); invariant set ‖θ‖² ≤ β + δ
+};
+
+//! True when the parameters define a projection (finite, α >= 0, β > 0, δ > 0).
+inline bool valid(const ProjectionParams& p) noexcept {
+  return std::isfinite(p.alpha) && std::isfinite(p.beta) && std::isfinite(p.delta) &&
+         p.alpha >= 0.0 && p.beta > 0.0 && p.delta > 0.0;
+}
+
+//! θ̇ = Proj(θ, Φ) into `theta_dot`. `active` (optional) reports whether the correction acted.
+//! Returns non_finite_input or invalid_parameter with the outputs untouched, ok otherwise.
+template <int K>
+[[nodiscard]] Status smooth_projection(const Vec<K>& theta, const Vec<K>& Phi,
+                                       const ProjectionParams& p, Vec<K>& theta_dot,
+                                       bool* active = nullptr) noexcept {
+  if (!valid(p)) return Status::invalid_parameter;
+  if (!all_finite(theta) || !all_finite(Phi)) return Status::non_finite_input;
+  const double n2 = theta.squaredNorm();
+  const double tPhi = theta.dot(Phi);
+  const bool on = n2 >= p.beta && tPhi > 0.0;  // seed 001 §A.4 #19: the two cases partition
+  if (on) {
+    const double c = (n2 - p.beta) / p.delta;  // seed 001 §A.4 #18
+    theta_dot = p.alpha * (Phi - (c * tPhi / n2) * theta);
+  } else {
+    theta_dot = p.alpha * Phi;
+  }
+  if (active) *active = on;
+  return Status::ok;
+}
+
+//! Discrete-time safeguard (seed 001 §A.3 step 13, not in the paper): an explicit-Euler step
+//! can overshoot the invariant ball; rescale θ radially onto ‖θ‖² = bound_sq if it did.
+//! Returns true when it rescaled (callers count these events; a correct run has none).
+template <int K>
+bool radial_safeguard(Vec<K>& theta, double bound_sq) noexcept {
+  const double n2 = theta.squaredNorm();
+  if (!(n2 > bound_sq)) return false;
+  theta *= std::sqrt(bound_sq / n2);
+  return true;
+}
+
+}  // namespace adcs
