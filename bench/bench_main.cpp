@@ -60,6 +60,30 @@ void BM_RwAllocation_Step(benchmark::State& state) {
 }
 BENCHMARK(BM_RwAllocation_Step);
 
+// One HybridAdaptive::step() (seed 001, M = 4 CMGs, N = 3 wheels): regressors, steering via
+// LDLT of X X^T, adaptation with projection. Inputs move each iteration.
+void BM_HybridAdaptive_Step(benchmark::State& state) {
+  adcs::HybridAdaptive<4, 3>::Params p;
+  p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  adcs::HybridAdaptive<4, 3> ctrl(p);
+  adcs::HybridAdaptive<4, 3>::Measurement m;
+  m.sigma_BN << 0.3, -0.2, 0.1;
+  m.omega_BN_B << 0.01, -0.02, 0.015;
+  m.gamma << 0.1, -0.2, 0.15, 0.05;
+  const adcs::SinusoidalRateReference ref;
+  adcs::MrpReferenceSample r = ref.sample(123.0, adcs::Vec3(0.29, -0.21, 0.1));
+  adcs::HybridAdaptive<4, 3>::Command out;
+  double k = 0.0;
+  for (auto _ : state) {
+    m.gamma(0) = 0.1 + 1e-9 * k;
+    k += 1.0;
+    benchmark::DoNotOptimize(ctrl.step(m, r, out));
+    benchmark::DoNotOptimize(out.u.data());
+    if (static_cast<long>(k) % 4096 == 0) ctrl.reset();  // keep the estimates near nominal
+  }
+}
+BENCHMARK(BM_HybridAdaptive_Step);
+
 // Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
 void BM_Pinv3x4(benchmark::State& state) {
   adcs::Mat<3, 4> X = four_wheel_axes();

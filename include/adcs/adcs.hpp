@@ -13,6 +13,7 @@
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/actuator/steering.hpp"
 #include "adcs/adapt/projection.hpp"
+#include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/plant/rigid_body_rw.hpp"
 #include "adcs/plant/vscmg_cluster.hpp"

@@ -97,6 +97,35 @@ TEST(NoMalloc, MrpPdStepAndAllocation) {
   EXPECT_EQ(rejected, adcs::Status::non_finite_input);
 }
 
+TEST(NoMalloc, HybridAdaptiveStep) {
+  adcs::HybridAdaptive<4, 3>::Params p;
+  p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  adcs::HybridAdaptive<4, 3> ctrl(p);
+  ASSERT_EQ(ctrl.status(), adcs::Status::ok);
+  adcs::HybridAdaptive<4, 3>::Measurement m;
+  m.sigma_BN << 0.01, -0.02, 0.03;
+  m.omega_BN_B << 1e-3, 2e-3, -1e-3;
+  const adcs::SinusoidalRateReference ref;
+  adcs::HybridAdaptive<4, 3>::Command cmd;
+  adcs::HybridAdaptive<4, 3>::Diagnostics diag;
+  long allocs = 0;
+  int not_usable = 0;
+  adcs::Status rejected = adcs::Status::ok;
+  {
+    NoAllocScope scope;
+    for (int k = 0; k < 100; ++k) {
+      m.gamma(0) = 1e-3 * k;
+      not_usable += !adcs::usable(ctrl.step(m, ref.sample(1e-3 * k, m.sigma_BN * 0.5), cmd, &diag));
+    }
+    m.omega_BN_B(2) = std::numeric_limits<double>::infinity();
+    rejected = ctrl.step(m, ref.sample(0.2, m.sigma_BN), cmd);
+    allocs = scope.allocations();
+  }
+  EXPECT_EQ(allocs, 0);
+  EXPECT_EQ(not_usable, 0);
+  EXPECT_EQ(rejected, adcs::Status::non_finite_input);
+}
+
 TEST(NoMalloc, PlantDerivativeAndMathKernels) {
   adcs::RigidBodyRwParams<4> pp;
   pp.J_B = adcs::Vec3(900, 800, 600).asDiagonal();

@@ -10,6 +10,7 @@ template class VscmgCtrlPlant<4, 3>;
 template struct VscmgGeometry<4, 3>;
 template class RwTorqueAllocator<4>;
 template class MrpPd<4>;
+template class HybridAdaptive<4, 3>;
 template class MrpPd<3>;
 template Status right_pinv_solve<3, 7>(const Mat<3, 7>&, const Vec<3>&, Vec<7>&, PinvInfo*) noexcept;
 template Status right_pinv<3, 4>(const Mat<3, 4>&, Mat<4, 3>&, PinvInfo*) noexcept;

@@ -31,7 +31,13 @@ namespace detail {
 template <int R, int C>
 inline void fill_singular_values(const Mat<R, R>& M, PinvInfo& info) noexcept {
   Eigen::SelfAdjointEigenSolver<Mat<R, R>> eig;
-  eig.compute(M, Eigen::EigenvaluesOnly);
+  if constexpr (R == 3) {
+    // Closed-form (trigonometric) eigenvalues: ~5x faster than the QR iteration, absolute error
+    // ~eps * lambda_max, so the condition number stays meaningful up to ~1e13 (> our 1e12 cap).
+    eig.computeDirect(M, Eigen::EigenvaluesOnly);
+  } else {
+    eig.compute(M, Eigen::EigenvaluesOnly);
+  }
   const double lmin = std::max(eig.eigenvalues()(0), 0.0);
   const double lmax = std::max(eig.eigenvalues()(R - 1), 0.0);
   info.sigma_min = std::sqrt(lmin);

@@ -1,0 +1,255 @@
+#pragma once
+// Adaptive MIMO attitude tracking for a hybrid CMG + reaction-wheel spacecraft with installation
+// deviations (seed 001, Ye, Sun & Liu 2016), spec §A.3 steps 1-14:
+//   σ̈ = F*(σ,σ̇) + G*(σ,σ̇) u,  u = [γ̇ (M) rad/s; Ω̇_w (N) rad/s²]           seed 001 eq. (8)
+//   F* = F*n + Y_F Θ_F,  G* = G*n + Y_G Θ_G  (Θ_F = H_I^Δ, Θ_Gk = axis deviations)  eqs. (15)-(20)
+//   u = X⁺ v,  X = G*n + Y_G Θ̂_G,  v = −K e − F*n − Y_F Θ̂_F + σ̈_d                   eq. (24)
+//   Θ̂̇_F = α_F Y_Fᵀ B0ᵀ P e,  Θ̂̇_Gk = Proj(Θ̂_Gk, Y_Gkᵀ B0ᵀ P e u_k)               eqs. (25)-(26)
+// K from the closed-loop eigenvalues and P from A_1ᵀP + PA_1 = −Q_L are computed once at
+// construction; step() is the per-sample arithmetic, estimates integrated by explicit Euler at
+// the control period (spec §A.3 step 13) with the discrete radial safeguard (counted).
+// α_F = α_G = 0 gives the non-adaptive baseline.
+#include <array>
+#include <cstdint>
+
+#include "adcs/actuator/steering.hpp"
+#include "adcs/adapt/projection.hpp"
+#include "adcs/core/failure_hook.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/math/lyapunov.hpp"
+#include "adcs/math/mrp.hpp"
+#include "adcs/math/place.hpp"
+#include "adcs/plant/vscmg_cluster.hpp"
+#include "adcs/reference/sinusoidal_rate.hpp"
+
+namespace adcs {
+
+//! Closed-loop eigenvalues of seed 001 §4 / spec §A.4 #22, one pair per axis:
+//! x {−0.2 ± 0.2i}, y {−0.3 ± 0.3i}, z {−0.2√2, −0.3√2}.
+inline AxisPoles<3> seed001_axis_poles() noexcept {
+  const double r2 = 1.4142135623730950488;
+  return AxisPoles<3>{{{{{-0.2, 0.2}, {-0.2, -0.2}}},
+                       {{{-0.3, 0.3}, {-0.3, -0.3}}},
+                       {{{-0.2 * r2, 0.0}, {-0.3 * r2, 0.0}}}}};
+}
+
+template <int M, int N>
+struct HybridAdaptiveParams {
+  VscmgGeometry<M, N> nominal;             //!< nominal geometry: all the controller knows
+  AxisPoles<3> poles = seed001_axis_poles();  //!< eig(A_1), one pair per axis (seed 001 §4)
+  Mat6 Q_L = Mat6::Identity();             //!< [-] Lyapunov weight (seed 001 §4: Q = I_6)
+  double alpha_F = 1.0e7;                  //!< [-] momentum adaptation gain (seed 001 §4)
+  double alpha_G = 1.0e3;                  //!< [-] deviation adaptation gain (seed 001 §4)
+  double beta_G = 0.05;                    //!< [-] projection radius² β_Gi (seed 001 §4)
+  double delta_G = 0.1;                    //!< [-] projection boundary layer δ_Gi (seed 001 §4)
+  Vec3 H_I_n = Vec3::Zero();               //!< [N m s] nominal inertial momentum H_I^n (§A.3)
+  double control_period_s = 1.0e-3;        //!< [s] T_c (spec §A.5: ≥ 5 ms is unstable)
+  SteeringParams steering{};               //!< singularity-robust fallback threshold/damping
+};
+
+template <int M, int N>
+struct HybridAdaptiveMeasurement {
+  Vec3 sigma_BN = Vec3::Zero();     //!< [-] attitude MRP (not shadow-switched, spec §A.2.4)
+  Vec3 omega_BN_B = Vec3::Zero();   //!< [rad/s] body rate
+  Vec<M> gamma = Vec<M>::Zero();    //!< [rad] gimbal angles
+  Vec<N> Omega_w = Vec<N>::Zero();  //!< [rad/s] wheel speeds (not used by the law; checked)
+};
+
+template <int M, int N>
+struct HybridAdaptiveCommand {
+  Vec<M + N> u = Vec<M + N>::Zero();  //!< [rad/s (M) | rad/s² (N)] gimbal rates, wheel accels
+};
+
+//! Optional per-step diagnostics (caller-owned; costs nothing when not requested).
+template <int M, int N>
+struct HybridAdaptiveDiagnostics {
+  Vec6 e = Vec6::Zero();                     //!< [-, 1/s] tracking error [σ − σ_d; σ̇ − σ̇_d]
+  Mat<3, M + N> X = Mat<3, M + N>::Zero();   //!< steering matrix G*n + Y_G Θ̂_G
+  SteeringInfo steering{};                   //!< σ_min(X), mode used
+  int projection_active_blocks = 0;          //!< blocks whose projection correction acted
+};
+
+template <int M, int N>
+class HybridAdaptive {
+ public:
+  static constexpr int L = M + N;
+  using Params = HybridAdaptiveParams<M, N>;
+  using Measurement = HybridAdaptiveMeasurement<M, N>;
+  using Reference = MrpReferenceSample;
+  using Command = HybridAdaptiveCommand<M, N>;
+  using Diagnostics = HybridAdaptiveDiagnostics<M, N>;
+
+  explicit HybridAdaptive(const Params& p) noexcept : p_(p) {
+    bool ok = place_double_integrator<3>(p_.poles, K_) == Status::ok;
+    const Mat6 A1 = double_integrator_closed_loop<3>(K_);
+    ok = ok && solve_continuous_lyapunov<6>(A1, p_.Q_L, P_) == Status::ok;
+    B0tP_ = P_.template bottomRows<3>();  // B0ᵀP with B0 = [0; I3]
+    J_n_ = p_.nominal.J_tr(Vec<M>::Zero());  // spec §A.3: J_n = J_tr(0), nominal geometry
+    const Eigen::LLT<Mat3> llt(J_n_);
+    ok = ok && llt.info() == Eigen::Success;
+    J_n_inv_ = llt.solve(Mat3::Identity());
+    proj_ = ProjectionParams{p_.alpha_G, p_.beta_G, p_.delta_G};
+    ok = ok && valid(proj_) && std::isfinite(p_.alpha_F) && p_.alpha_F >= 0.0 &&
+         p_.control_period_s > 0.0 && all_finite(p_.H_I_n) && all_finite(J_n_inv_);
+    status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles, Q_L, J_n, alpha, "
+                             "beta, delta, period)")
+                  ? Status::ok
+                  : Status::invalid_parameter;
+    reset();
+  }
+
+  //! Construction outcome (invalid_parameter makes every step() return it).
+  Status status() const noexcept { return status_; }
+
+  //! Estimates to their initial values Θ̂(0) = 0 (spec §A.5), counters and command to zero.
+  void reset() noexcept {
+    theta_F_.setZero();
+    theta_c_.setZero();
+    theta_w_.setZero();
+    last_.u.setZero();
+    safeguard_count_ = 0;
+  }
+
+  //! One control sample. Returns ok; ill_conditioned (singularity-robust steering used);
+  //! constraint_violated (the discrete safeguard rescaled an estimate; counted);
+  //! non_finite_input / singular / out_of_range / invalid_parameter with `out` = last good
+  //! command and every estimate untouched.
+  [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
+                            Diagnostics* diag = nullptr) noexcept {
+    out = last_;
+    if (status_ != Status::ok) return status_;
+    if (!all_finite(m.sigma_BN) || !all_finite(m.omega_BN_B) || !all_finite(m.gamma) ||
+        !all_finite(m.Omega_w) || !all_finite(r.sigma) || !all_finite(r.sigma_dot) ||
+        !all_finite(r.sigma_ddot))
+      return Status::non_finite_input;
+
+    const Vec3& sigma = m.sigma_BN;
+    const Vec3& w = m.omega_BN_B;
+    // Steps 1-3: kinematics and error.
+    const Mat3 G = mrp_G(sigma);
+    const Vec3 sigma_dot = G * w;                                   // seed 001 eq. (6)
+    Vec6 e;
+    e << sigma - r.sigma, sigma_dot - r.sigma_dot;
+    const Vec3 PBe = B0tP_ * e;                                     // B0ᵀ P e
+    const Mat3 G_dot = mrp_G_dot(sigma, sigma_dot);
+    const Mat3 GJ = G * J_n_inv_;                                   // G J_n⁻¹ = H*⁻¹G⁻ᵀ
+    // Steps 4-5: drift and its momentum regressor.
+    const Mat3 Y_F = -GJ * skew(w) * mrp_to_dcm(sigma);             // seed 001 eq. (16)
+    const Vec3 F_n = G_dot * w + Y_F * p_.H_I_n;                    // seed 001 eq. (15)
+    // Steps 6-8: X = G*n + Y_G Θ̂_G column by column (eqs. (17)-(20)).
+    Mat<3, L> X;
+    for (int i = 0; i < M; ++i) {
+      const double c = std::cos(m.gamma(i)), s = std::sin(m.gamma(i));
+      const Vec3 t_n = c * p_.nominal.A_ct0.col(i) - s * p_.nominal.A_cs0.col(i);   // eq. (3)
+      const Vec3 dt = c * theta_c_.col(i).template head<3>() - s * theta_c_.col(i).template tail<3>();
+      X.col(i) = -p_.nominal.h_cw(i) * (GJ * (t_n + dt));                            // eq. (19)
+    }
+    for (int j = 0; j < N; ++j)
+      X.col(M + j) = -p_.nominal.I_wws(j) * (GJ * (p_.nominal.A_ws.col(j) + theta_w_.col(j)));
+    // Step 9: desired σ̈.
+    const Vec3 v = -K_ * e - F_n - Y_F * theta_F_ + r.sigma_ddot;   // seed 001 eq. (24)
+    // Step 10: right pseudo-inverse (LDLT of X Xᵀ), singularity-robust fallback.
+    Vec<L> u;
+    SteeringInfo sinfo;
+    const Status steer_status = steer<L>(X, v, p_.steering, u, &sinfo);
+    if (diag) {
+      diag->e = e;
+      diag->X = X;
+      diag->steering = sinfo;
+    }
+    if (!usable(steer_status)) return steer_status;
+    if (!all_finite(u)) return Status::out_of_range;
+
+    // Steps 11-13: adaptation, explicit Euler over T_c; commit only if everything is finite.
+    const double T = p_.control_period_s;
+    const Vec3 theta_F_next = theta_F_ + T * p_.alpha_F * (Y_F.transpose() * PBe);  // eq. (25)
+    Mat<6, M> theta_c_next;
+    Mat<3, N> theta_w_next;
+    int active_blocks = 0;
+    bool safeguard = false;
+    const double bound = p_.beta_G + p_.delta_G;
+    const Vec3 GJtPBe = GJ.transpose() * PBe;
+    for (int i = 0; i < M; ++i) {
+      const double c = std::cos(m.gamma(i)), s = std::sin(m.gamma(i));
+      Vec6 Phi;  // Y_cGiᵀ PBe u_i, Y_cGi = −h_cw,i GJ [c I3, −s I3]        eqs. (19), (26)
+      Phi << -p_.nominal.h_cw(i) * c * GJtPBe, p_.nominal.h_cw(i) * s * GJtPBe;
+      Phi *= u(i);
+      Vec6 rate;
+      bool active = false;
+      const Vec6 th = theta_c_.col(i);
+      if (smooth_projection<6>(th, Phi, proj_, rate, &active) != Status::ok) return Status::out_of_range;
+      Vec6 next = th + T * rate;
+      safeguard = radial_safeguard<6>(next, bound) || safeguard;
+      theta_c_next.col(i) = next;
+      active_blocks += active;
+    }
+    for (int j = 0; j < N; ++j) {
+      const Vec3 Phi = (-p_.nominal.I_wws(j) * u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, eq. (20)
+      Vec3 rate;
+      bool active = false;
+      const Vec3 th = theta_w_.col(j);
+      if (smooth_projection<3>(th, Phi, proj_, rate, &active) != Status::ok) return Status::out_of_range;
+      Vec3 next = th + T * rate;
+      safeguard = radial_safeguard<3>(next, bound) || safeguard;
+      theta_w_next.col(j) = next;
+      active_blocks += active;
+    }
+    if (!all_finite(theta_F_next) || !all_finite(theta_c_next) || !all_finite(theta_w_next))
+      return Status::out_of_range;
+
+    theta_F_ = theta_F_next;
+    theta_c_ = theta_c_next;
+    theta_w_ = theta_w_next;
+    if (safeguard) ++safeguard_count_;
+    if (diag) diag->projection_active_blocks = active_blocks;
+    last_.u = u;
+    out = last_;  // step 14: the caller holds u over the period (ZOH)
+    if (safeguard) return Status::constraint_violated;
+    return steer_status;
+  }
+
+  // --- estimates and constants (read-only) ---
+  const Vec3& theta_F() const noexcept { return theta_F_; }      //!< [N m s] Θ̂_F = Ĥ_I^Δ
+  Vec6 theta_cG(int i) const noexcept { return theta_c_.col(i); }  //!< [-] [Δt̂_i0; Δŝ_i0]
+  Vec3 theta_wG(int j) const noexcept { return theta_w_.col(j); }  //!< [-] Δŝ_wj
+  std::uint32_t safeguard_count() const noexcept { return safeguard_count_; }
+  const Mat<3, 6>& K() const noexcept { return K_; }
+  const Mat6& P() const noexcept { return P_; }
+  const Mat3& J_n() const noexcept { return J_n_; }
+  const Params& params() const noexcept { return p_; }
+
+  //! Sets the estimates (oracle tests with the true Θ, warm starts). Rejects non-finite values
+  //! and blocks outside the invariant ball ‖Θ̂_Gk‖² ≤ β + δ, leaving the estimates untouched.
+  [[nodiscard]] Status set_estimates(const Vec3& theta_F, const Mat<6, M>& theta_c,
+                                     const Mat<3, N>& theta_w) noexcept {
+    if (!all_finite(theta_F) || !all_finite(theta_c) || !all_finite(theta_w))
+      return Status::non_finite_input;
+    const double bound = p_.beta_G + p_.delta_G;
+    if ((theta_c.colwise().squaredNorm().array() > bound).any() ||
+        (theta_w.colwise().squaredNorm().array() > bound).any())
+      return Status::out_of_range;
+    theta_F_ = theta_F;
+    theta_c_ = theta_c;
+    theta_w_ = theta_w;
+    return Status::ok;
+  }
+
+ private:
+  Params p_;
+  Mat<3, 6> K_ = Mat<3, 6>::Zero();
+  Mat6 P_ = Mat6::Zero();
+  Mat<3, 6> B0tP_ = Mat<3, 6>::Zero();
+  Mat3 J_n_ = Mat3::Identity();
+  Mat3 J_n_inv_ = Mat3::Identity();
+  ProjectionParams proj_{};
+  Status status_ = Status::ok;
+
+  Vec3 theta_F_ = Vec3::Zero();
+  Mat<6, M> theta_c_ = Mat<6, M>::Zero();
+  Mat<3, N> theta_w_ = Mat<3, N>::Zero();
+  Command last_{};
+  std::uint32_t safeguard_count_ = 0;
+};
+
+}  // namespace adcs

@@ -1,0 +1,233 @@
+// seed 001 controller algebra (spec §A.3) on the controller-model plant TP-CTRL:
+// S7 (K, P), S8 (parameterisation exactness), S10 (exact linear error dynamics with the true Θ),
+// S14 (no deviations, no adaptation: e ≡ 0), bad input, reset, determinism.
+#include <gtest/gtest.h>
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <cstring>
+#include <limits>
+
+#include "adcs/control/hybrid_adaptive.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
+
+namespace {
+using Ctrl = adcs::HybridAdaptive<4, 3>;
+using Plant = adcs::VscmgCtrlPlant<4, 3>;
+using adcs::Status;
+using adcs::Vec3;
+using adcs::Vec6;
+
+Ctrl::Params controller_params(double alpha_F = 1e7, double alpha_G = 1e3) {
+  Ctrl::Params p;
+  p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  p.alpha_F = alpha_F;
+  p.alpha_G = alpha_G;
+  return p;
+}
+
+// Closed loop on TP-CTRL: controller at 1 ms with ZOH, plant and σ_d by RK4 (1 ms).
+struct Loop {
+  Plant plant;
+  Ctrl ctrl;
+  adcs::SinusoidalRateReference ref;
+  Plant::State x;
+  Vec3 sigma_d = Vec3::Zero();
+  double t = 0.0;
+  int nonok = 0;
+
+  Loop(const adcs::VscmgParams<4, 3>& pp, const Ctrl::Params& cp, const Plant::State& x0)
+      : plant(pp), ctrl(cp), x(x0) {}
+
+  Vec6 error() const {
+    Vec6 e;
+    const Vec3 s = Plant::sigma_BN(x);
+    e << s - sigma_d,
+        adcs::mrp_G(s) * Plant::omega_BN_B(x) - ref.sigma_dot(t, sigma_d);
+    return e;
+  }
+
+  void run(double duration, double h = 1e-3) {
+    const int n = static_cast<int>(std::lround(duration / h));
+    const double t0 = t;
+    for (int k = 0; k < n; ++k) {
+      Ctrl::Measurement m;
+      m.sigma_BN = Plant::sigma_BN(x);
+      m.omega_BN_B = Plant::omega_BN_B(x);
+      m.gamma = Plant::gamma(x);
+      m.Omega_w = Plant::Omega_w(x);
+      Ctrl::Command c;
+      if (ctrl.step(m, ref.sample(t, sigma_d), c) != Status::ok) ++nonok;
+      // RK4 of [x; σ_d] with u held.
+      auto f = [&](double tt, const Plant::State& xs, const Vec3& sd, Plant::State& dx, Vec3& dsd) {
+        plant.derivative(tt, xs, c.u, dx);
+        dsd = ref.sigma_dot(tt, sd);
+      };
+      Plant::State k1, k2, k3, k4;
+      Vec3 d1, d2, d3, d4;
+      f(t, x, sigma_d, k1, d1);
+      f(t + 0.5 * h, Plant::State(x + 0.5 * h * k1), Vec3(sigma_d + 0.5 * h * d1), k2, d2);
+      f(t + 0.5 * h, Plant::State(x + 0.5 * h * k2), Vec3(sigma_d + 0.5 * h * d2), k3, d3);
+      f(t + h, Plant::State(x + h * k3), Vec3(sigma_d + h * d3), k4, d4);
+      x += h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
+      sigma_d += h / 6.0 * (d1 + 2 * d2 + 2 * d3 + d4);
+      t = t0 + (k + 1) * h;
+    }
+  }
+};
+
+// Θ̂ = the true Θ for D1, and Θ̂_F = H_I,true − H_I^n.
+void set_true_estimates(Ctrl& c, const Plant& plant, const Plant::State& x0, const Vec3& H_n) {
+  const adcs::VscmgDeviation<4, 3> d = adcs::deviation_set_D1();
+  adcs::Mat<6, 4> th_c;
+  adcs::Mat<3, 3> th_w;
+  for (int i = 0; i < 4; ++i) th_c.col(i) = d.theta_cG(i);
+  for (int j = 0; j < 3; ++j) th_w.col(j) = d.theta_wG(j);
+  ASSERT_EQ(c.set_estimates(Vec3(plant.momentum_N(x0) - H_n), th_c, th_w), Status::ok);
+}
+
+TEST(HybridAdaptive, GainsAndLyapunovMatrixS7) {
+  const Ctrl c(controller_params());
+  ASSERT_EQ(c.status(), Status::ok);
+  const Vec3 kp(0.08, 0.18, 0.12), kd(0.4, 0.6, 0.5 * std::sqrt(2.0));
+  EXPECT_LT((c.K().leftCols<3>().diagonal() - kp).norm(), 1e-14);
+  EXPECT_LT((c.K().rightCols<3>().diagonal() - kd).norm(), 1e-14);
+  for (int i = 0; i < 3; ++i) {  // spec §A.3 closed form
+    EXPECT_NEAR(c.P()(i + 3, i), 1.0 / (2 * kp(i)), 1e-12);
+    EXPECT_NEAR(c.P()(i + 3, i + 3), (1 + kp(i)) / (2 * kp(i) * kd(i)), 1e-12);
+    EXPECT_NEAR(c.P()(i, i), (1 + kp(i)) / (2 * kd(i)) + kd(i) / (2 * kp(i)), 1e-12);
+  }
+  const adcs::Mat6 A1 = adcs::double_integrator_closed_loop<3>(c.K());
+  EXPECT_LT((A1.transpose() * c.P() + c.P() * A1 + adcs::Mat6::Identity()).norm(), 1e-12);
+  EXPECT_NEAR(c.J_n()(0, 0), 120.0613, 1e-4);
+}
+
+TEST(HybridAdaptive, ParameterisationIsExactS8) {
+  const adcs::VscmgParams<4, 3> pp = adcs::vscmg_params_A_REF();
+  const Plant plant(pp);
+  Ctrl c(controller_params());
+  set_true_estimates(c, plant, Plant::State::Zero(), Vec3::Zero());
+  std::srand(3);
+  for (int k = 0; k < 20; ++k) {
+    Ctrl::Measurement m;
+    m.sigma_BN = 0.5 * Vec3::Random();
+    m.omega_BN_B = 0.02 * Vec3::Random();
+    m.gamma = adcs::Vec<4>::Random() * 3.0;
+    Ctrl::Diagnostics d;
+    Ctrl::Command out;
+    Ctrl c2 = c;  // keep the estimates exact for every sample
+    ASSERT_TRUE(adcs::usable(c2.step(m, adcs::MrpReferenceSample{}, out, &d)));
+    const adcs::Mat<3, 7> X_true = -adcs::mrp_G(m.sigma_BN) * plant.J_n().inverse() *
+                                   pp.truth.Q_act(m.gamma);
+    EXPECT_LT((d.X - X_true).norm(), 1e-13 * X_true.norm()) << k;
+  }
+}
+
+TEST(HybridAdaptive, OracleErrorDynamicsAreExactlyLinearS10) {
+  const adcs::VscmgParams<4, 3> pp = adcs::vscmg_params_A_REF();
+  Plant::State x0 = Plant::State::Zero();
+  x0.head<3>() << 0.01, -0.02, 0.015;
+  Loop loop(pp, controller_params(0.0, 0.0), x0);
+  set_true_estimates(loop.ctrl, loop.plant, x0, Vec3::Zero());
+  const Vec6 e0 = loop.error();
+  const adcs::Mat6 A1 = adcs::double_integrator_closed_loop<3>(loop.ctrl.K());
+  for (double t_check : {5.0, 10.0, 20.0}) {
+    loop.run(t_check - loop.t);
+    const Vec6 expected = (A1 * t_check).exp() * e0;
+    // The law is continuous-time; ZOH at 1 ms leaves an O(T) deviation (measured ~9e-5·|e0|).
+    EXPECT_LT((loop.error() - expected).norm(), 2e-4 * e0.norm()) << t_check;
+  }
+  EXPECT_EQ(loop.nonok, 0);
+}
+
+TEST(HybridAdaptive, NoDeviationNoAdaptationTracksExactlyS14) {
+  // Spec S14: |e| < 1e-12 for the continuous law. Sampled at T with ZOH the residual is O(T):
+  // check it is small at 1 ms and halves with T (so it is the sampling, not the algebra).
+  adcs::VscmgParams<4, 3> pp;
+  pp.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  pp.truth = pp.nominal;
+  double e_at[2] = {0.0, 0.0};
+  for (int k = 0; k < 2; ++k) {
+    const double T = k == 0 ? 1e-3 : 5e-4;
+    Ctrl::Params cp = controller_params(0.0, 0.0);
+    cp.control_period_s = T;
+    Loop loop(pp, cp, Plant::State::Zero());
+    loop.run(50.0, T);
+    e_at[k] = loop.error().norm();
+    EXPECT_EQ(loop.nonok, 0);
+  }
+  EXPECT_LT(e_at[0], 5e-9);  // measured 3.6e-9 after 50 s
+  EXPECT_NEAR(e_at[0] / e_at[1], 2.0, 0.2);
+}
+
+TEST(HybridAdaptive, AdaptationReducesTrackingErrorOnTpCtrl) {
+  const adcs::VscmgParams<4, 3> pp = adcs::vscmg_params_A_REF();
+  Loop fixed(pp, controller_params(0.0, 0.0), Plant::State::Zero());
+  Loop adaptive(pp, controller_params(), Plant::State::Zero());
+  double e_fixed = 0.0, e_adapt = 0.0;
+  for (int k = 0; k < 30; ++k) {  // 300 s, error max over [100, 300] s
+    fixed.run(10.0);
+    adaptive.run(10.0);
+    if (fixed.t >= 100.0) {
+      e_fixed = std::max(e_fixed, fixed.error().head<3>().norm());
+      e_adapt = std::max(e_adapt, adaptive.error().head<3>().norm());
+    }
+  }
+  EXPECT_LT(e_adapt, e_fixed);
+  EXPECT_EQ(adaptive.ctrl.safeguard_count(), 0u);
+  for (int i = 0; i < 4; ++i) EXPECT_LE(adaptive.ctrl.theta_cG(i).squaredNorm(), 0.15 + 1e-9);
+  EXPECT_NE(adaptive.ctrl.theta_F(), Vec3::Zero());
+}
+
+TEST(HybridAdaptive, BadInputHoldsCommandAndEstimates) {
+  Ctrl c(controller_params());
+  Ctrl::Measurement m;
+  m.sigma_BN << 0.01, 0.02, -0.01;
+  m.omega_BN_B << 1e-3, -2e-3, 5e-4;
+  adcs::MrpReferenceSample r;
+  Ctrl::Command good, out;
+  ASSERT_EQ(c.step(m, r, good), Status::ok);
+  const Vec3 thF = c.theta_F();
+  const Vec6 thc = c.theta_cG(2);
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Ctrl::Measurement mb = m;
+    mb.gamma(1) = bad;
+    EXPECT_EQ(c.step(mb, r, out), Status::non_finite_input);
+    EXPECT_EQ(out.u, good.u);
+    adcs::MrpReferenceSample rb;
+    rb.sigma_ddot(2) = bad;
+    EXPECT_EQ(c.step(m, rb, out), Status::non_finite_input);
+    EXPECT_EQ(out.u, good.u);
+  }
+  EXPECT_EQ(c.theta_F(), thF);
+  EXPECT_EQ(c.theta_cG(2), thc);
+  // Estimates outside the invariant ball are refused.
+  EXPECT_EQ(c.set_estimates(Vec3::Zero(), adcs::Mat<6, 4>::Constant(0.5), adcs::Mat3::Zero()),
+            Status::out_of_range);
+  EXPECT_EQ(c.theta_F(), thF);
+  // Invalid parameters: every step says so and the output stays finite (zero).
+  Ctrl::Params bad = controller_params();
+  bad.delta_G = 0.0;
+  Ctrl cb(bad);
+  EXPECT_EQ(cb.status(), Status::invalid_parameter);
+  EXPECT_EQ(cb.step(m, r, out), Status::invalid_parameter);
+  EXPECT_EQ(out.u, adcs::Vec<7>::Zero());
+}
+
+TEST(HybridAdaptive, ResetRestoresInitialBehaviourBitForBit) {
+  Ctrl a(controller_params());
+  Ctrl::Measurement m;
+  m.sigma_BN << 0.01, 0.02, -0.01;
+  m.omega_BN_B << 1e-3, -2e-3, 5e-4;
+  m.gamma << 0.1, -0.2, 0.05, 0.0;
+  adcs::MrpReferenceSample r;
+  Ctrl::Command first, again;
+  ASSERT_EQ(a.step(m, r, first), Status::ok);
+  for (int k = 0; k < 10; ++k) ASSERT_EQ(a.step(m, r, again), Status::ok);
+  EXPECT_NE(a.theta_F(), Vec3::Zero());
+  a.reset();
+  EXPECT_EQ(a.theta_F(), Vec3::Zero());
+  ASSERT_EQ(a.step(m, r, again), Status::ok);
+  EXPECT_EQ(std::memcmp(first.u.data(), again.u.data(), sizeof(double) * 7), 0);
+}
+}  // namespace
