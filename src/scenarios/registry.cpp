@@ -9,6 +9,10 @@ namespace adcs::sim {
 // Factories, one per scenario file in src/scenarios/.
 std::unique_ptr<Scenario> make_rigid_rw_torquefree();
 std::unique_ptr<Scenario> make_rigid_rw_mrp_pd();
+std::unique_ptr<Scenario> make_hybrid_adaptive();
+std::unique_ptr<Scenario> make_hybrid_nonadaptive();
+std::unique_ptr<Scenario> make_hybrid_adaptive_bias();
+std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias();
 
 namespace {
 
@@ -16,6 +20,10 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   std::vector<std::unique_ptr<Scenario>> v;
   v.push_back(make_rigid_rw_torquefree());
   v.push_back(make_rigid_rw_mrp_pd());
+  v.push_back(make_hybrid_adaptive());
+  v.push_back(make_hybrid_nonadaptive());
+  v.push_back(make_hybrid_adaptive_bias());
+  v.push_back(make_hybrid_nonadaptive_bias());
   return v;
 }
 

@@ -1,0 +1,351 @@
+// Seed 001 scenarios (spec §A.5): hybrid 4-CMG pyramid + 3 wheels with installation deviations,
+// tracking the eq. (27) reference under the adaptive MIMO law (control/hybrid_adaptive.hpp).
+//   hybrid-adaptive / hybrid-nonadaptive           A-REF (D1, Ω_w(0) = 0), 800 s, T_c = 1 ms
+//   hybrid-adaptive-bias / hybrid-nonadaptive-bias A-BIAS (Ω_w(0) = 150 rad/s, H_I^n told 0)
+// Truth plant TP-FULL (momentum form) with σ_d integrated alongside by the same integrator.
+// Every parameter the paper does not give is declared below with "assumed (spec A.5)".
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "adcs/control/hybrid_adaptive.hpp"
+#include "adcs/math/euler.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
+#include "scenarios/scenario.hpp"
+#include "sim/cvode_integrator.hpp"
+#include "sim/metrics.hpp"
+#include "sim/random.hpp"
+#include "sim/recorder.hpp"
+#include "sim/rk4_integrator.hpp"
+#include "sim/sampled_data.hpp"
+
+namespace adcs::sim {
+namespace {
+
+constexpr int kM = 4, kN = 3;
+using FullPlant = VscmgFullPlant<kM, kN>;
+using Controller = HybridAdaptive<kM, kN>;
+
+//! TP-FULL plus the reference MRP σ_d (spec §A.2.4: integrated with the plant, same step).
+struct HybridSimPlant {
+  static constexpr int kStateSize = FullPlant::kStateSize + 3;
+  static constexpr int kInputSize = FullPlant::kInputSize;
+  using State = Vec<kStateSize>;
+  using Input = Vec<kInputSize>;
+  const FullPlant* plant;
+  SinusoidalRateReference ref;
+  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
+    FullPlant::State xp = x.head<FullPlant::kStateSize>(), dp;
+    plant->derivative(t, xp, u, dp);
+    xdot.head<FullPlant::kStateSize>() = dp;
+    xdot.tail<3>() = ref.sigma_dot(t, x.tail<3>());
+  }
+};
+
+constexpr const char* kA5 = "assumed (spec A.5)";
+constexpr const char* kPaper = "seed 001 §4";
+
+class HybridScenario final : public Scenario {
+ public:
+  HybridScenario(bool adaptive, bool bias) : adaptive_(adaptive), bias_(bias) {}
+
+  std::string name() const override {
+    return std::string("hybrid-") + (adaptive_ ? "adaptive" : "nonadaptive") + (bias_ ? "-bias" : "");
+  }
+  std::string description() const override {
+    return std::string("seed 001 ") + (bias_ ? "A-BIAS" : "A-REF") + ": 4-CMG pyramid + 3 wheels, D1 "
+           "deviations, eq. (27) reference, " + (adaptive_ ? "adaptive law (25)-(26)" : "no adaptation");
+  }
+
+  void declare(ParamSet& p) const override {
+    p.number("duration_s", 800.0, "s", std::string(kA5) + ": one period of the slowest ω_f");
+    p.number("control_period_s", 1e-3, "s", std::string(kA5) + ": T_c = 1 ms (≥ 5 ms unstable)");
+    p.vector("J_s_diag_kgm2", {120.0, 100.0, 80.0}, "kg m^2", std::string(kA5) + ": body inertia");
+    p.number("h_cw_Nms", 10.0, "N m s", std::string(kA5) + ": CMG rotor momentum");
+    p.number("I_wws_kgm2", 0.02, "kg m^2", std::string(kA5) + ": wheel spin inertia");
+    p.vector("I_c_sgt_kgm2", {0.012, 0.006, 0.01}, "kg m^2",
+             std::string(kA5) + ": CMG gimbal+rotor inertia about s, t, g");
+    p.name("deviation", "D1", {"D1", "none", "random"},
+           std::string(kA5) + ": D1 fixed set; random = Mode A drawn from --seed");
+    p.number("deviation_max", 0.05, "-", "seed 001 §4: ±0.05 per element (Mode A)");
+    p.number("alpha_F", adaptive_ ? 1.0e7 : 0.0, "-", kPaper);
+    p.number("alpha_G", adaptive_ ? 1.0e3 : 0.0, "-", kPaper);
+    p.number("beta_G", 0.05, "-", kPaper);
+    p.number("delta_G", 0.1, "-", kPaper);
+    p.vector("Kp_diag", {0.08, 0.18, 0.12}, "1/s^2", "spec §A.3 (eig listed in seed 001 §4)");
+    p.vector("Kd_diag", {0.4, 0.6, 0.5 * std::sqrt(2.0)}, "1/s", "spec §A.3 (eig listed in seed 001 §4)");
+    p.number("Omega_w0_rad_s", bias_ ? 150.0 : 0.0, "rad/s",
+             bias_ ? "spec §A.5 A-BIAS: bias momentum on all wheels" : kA5);
+    p.name("H_I_n", bias_ ? "zero" : "nominal", {"nominal", "zero"},
+           "controller's H_I^n: nominal model at t = 0, or zero (A-BIAS: unknown bias)");
+    p.vector("window_s", {200.0, 800.0}, "s", std::string(kA5) + ": steady-state window");
+    p.name("integrator", "rk4", {"rk4", "adams"},
+           "rk4: one RK4 step per control period (spec §A.5); adams: CVODE Adams");
+    p.number("record_every", 100, "samples", "CSV decimation (1 ms samples)");
+    if (adaptive_)
+      p.name("baseline", "run", {"run", "skip"},
+             "run: also simulate alpha_F = alpha_G = 0 for the R5 improvement ratio");
+  }
+
+  RunResult run(const ParamSet& p, const RunContext& ctx) const override {
+    // --- configuration (spec §A.5) ---
+    VscmgGeometry<kM, kN> nominal = pyramid_4cmg_3rw_nominal();
+    nominal.J_s = p.get_vec<3>("J_s_diag_kgm2").asDiagonal();
+    nominal.h_cw.setConstant(p.get_number("h_cw_Nms"));
+    nominal.I_wws.setConstant(p.get_number("I_wws_kgm2"));
+    const Vec3 Ic = p.get_vec<3>("I_c_sgt_kgm2");
+    nominal.I_cs.setConstant(Ic(0));
+    nominal.I_ct.setConstant(Ic(1));
+    nominal.I_cg.setConstant(Ic(2));
+    VscmgDeviation<kM, kN> dev;
+    const std::string mode = p.get_name("deviation");
+    if (mode == "D1") {
+      dev = deviation_set_D1();
+    } else if (mode == "random") {
+      Rng rng(ctx.seed);
+      const double a = p.get_number("deviation_max");
+      auto draw = [&](auto& m) {
+        for (int j = 0; j < m.cols(); ++j)
+          for (int i = 0; i < m.rows(); ++i) m(i, j) = rng.uniform(-a, a);
+      };
+      draw(dev.dA_cs0);
+      draw(dev.dA_ct0);
+      draw(dev.dA_ws);
+      draw(dev.dA_cg);
+    }
+    VscmgParams<kM, kN> pp;
+    pp.nominal = nominal;
+    pp.truth = apply_deviation(nominal, dev);
+    const FullPlant plant(pp);
+    if (plant.status() != Status::ok) throw ParamError("plant parameters are not physical");
+
+    const double T = p.get_number("control_period_s");
+    Controller::Params cp;
+    cp.nominal = nominal;
+    cp.alpha_F = p.get_number("alpha_F");
+    cp.alpha_G = p.get_number("alpha_G");
+    cp.beta_G = p.get_number("beta_G");
+    cp.delta_G = p.get_number("delta_G");
+    cp.control_period_s = T;
+    const Vec3 kp = p.get_vec<3>("Kp_diag"), kd = p.get_vec<3>("Kd_diag");
+    for (int i = 0; i < 3; ++i) {  // s² + kd s + kp = 0 per axis
+      const std::complex<double> disc = std::sqrt(std::complex<double>(kd(i) * kd(i) - 4 * kp(i)));
+      cp.poles[i] = {{(-kd(i) + disc) / 2.0, (-kd(i) - disc) / 2.0}};
+    }
+    // Initial state: σ = σ_d = 0, ω = 0, γ = 0, Ω_w = Omega_w0 (spec §A.4 #24, §A.5).
+    const Vec3 Omega0 = Vec3::Constant(p.get_number("Omega_w0_rad_s"));
+    const FullPlant::State x0p = plant.initial_state(Vec3::Zero(), Vec3::Zero(), Vec<kM>::Zero(), Omega0);
+    const Vec3 H_true = plant.momentum_N(x0p);
+    // H_I^n from the nominal model at t = 0 (σ = 0, ω = 0, γ = 0).
+    const Vec3 H_n_model = nominal.internal_momentum(Vec<kM>::Zero(), Vec<kM>::Zero(), Omega0);
+    cp.H_I_n = p.get_name("H_I_n") == "zero" ? Vec3::Zero() : H_n_model;
+    Controller ctrl(cp);
+    if (ctrl.status() != Status::ok) throw ParamError("controller parameters rejected (alpha, beta, delta, gains)");
+
+    HybridSimPlant sim{&plant, SinusoidalRateReference{}};
+    HybridSimPlant::State x;
+    x << x0p, Vec3::Zero();
+
+    std::unique_ptr<CsvRecorder> csv;
+    if (!ctx.csv_path.empty()) {
+      std::vector<Column> cols{{"t", "s"}};
+      for (const char* n : {"euler_err_1", "euler_err_2", "euler_err_3"}) cols.push_back({n, "rad"});
+      cols.push_back({"principal_err", "rad"});
+      cols.push_back({"rate_err", "rad/s"});
+      for (int i = 1; i <= kM; ++i) cols.push_back({"gamma_" + std::to_string(i), "rad"});
+      for (int j = 1; j <= kN; ++j) cols.push_back({"Omega_w_" + std::to_string(j), "rad/s"});
+      for (int k = 1; k <= 3; ++k) cols.push_back({"theta_F_" + std::to_string(k), "N m s"});
+      for (int k = 1; k <= 3; ++k) cols.push_back({"H_est_" + std::to_string(k), "N m s"});
+      for (int k = 1; k <= 3; ++k) cols.push_back({"H_true_" + std::to_string(k), "N m s"});
+      for (int i = 1; i <= kM; ++i) cols.push_back({"theta_cG_norm2_" + std::to_string(i), "-"});
+      for (int j = 1; j <= kN; ++j) cols.push_back({"theta_wG_norm2_" + std::to_string(j), "-"});
+      cols.push_back({"pinv_sigma_min", "-"});
+      csv = std::make_unique<CsvRecorder>(ctx.csv_path, cols, static_cast<int>(p.get_number("record_every")));
+    }
+
+    const Vec<2> window = p.get_vec<2>("window_s");
+    double e_att_max = 0, e_p_max = 0, e_rate_max = 0, proj_max = 0, sigma_min = INFINITY;
+    double gimbal_max = 0, wheel_max = 0, drift_max = 0, E_H_final = NAN, E_H0 = NAN, E_H_late_max = 0;
+    long nonok = 0;
+    Controller::Command cmd;
+    Controller::Diagnostics diag;
+    std::vector<double> row;
+    const SinusoidalRateReference& ref = sim.ref;
+
+    auto control = [&](double t, const HybridSimPlant::State& xs, HybridSimPlant::Input& u) {
+      const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
+      Controller::Measurement m;  // perfect measurements (spec §A.5)
+      m.sigma_BN = FullPlant::sigma_BN(xp);
+      m.omega_BN_B = plant.omega_BN_B(xp, u);  // ω with the γ̇ held over the last period
+      m.gamma = FullPlant::gamma(xp);
+      m.Omega_w = FullPlant::Omega_w(xp);
+      const Status s = ctrl.step(m, ref.sample(t, xs.tail<3>()), cmd, &diag);
+      if (s != Status::ok) ++nonok;
+      u = cmd.u;
+    };
+    auto observe = [&](double t, const HybridSimPlant::State& xs, const HybridSimPlant::Input& u) {
+      const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
+      const Vec3 sigma = FullPlant::sigma_BN(xp);
+      const Mat3 C_e = mrp_to_dcm(sigma) * mrp_to_dcm(xs.tail<3>()).transpose();  // spec §A.4 #23
+      const Vec3 ypr = dcm_to_euler321(C_e);
+      const double e_att = ypr.cwiseAbs().maxCoeff();
+      const double e_p = mrp_principal_angle(dcm_to_mrp(C_e));
+      const double e_rate = (plant.omega_BN_B(xp, u) - C_e * ref.omega(t)).norm();  // spec #28
+      const Vec3 H_est = cp.H_I_n + ctrl.theta_F();
+      const double E_H = (H_est - H_true).norm();
+      if (t == 0.0) E_H0 = E_H;
+      if (t >= window(0) && t <= window(1)) {
+        e_att_max = std::max(e_att_max, e_att);
+        e_p_max = std::max(e_p_max, e_p);
+        e_rate_max = std::max(e_rate_max, e_rate);
+      }
+      if (t >= 100.0) E_H_late_max = std::max(E_H_late_max, E_H);
+      E_H_final = E_H;
+      for (int i = 0; i < kM; ++i) proj_max = std::max(proj_max, ctrl.theta_cG(i).squaredNorm());
+      for (int j = 0; j < kN; ++j) proj_max = std::max(proj_max, ctrl.theta_wG(j).squaredNorm());
+      if (t > 0.0) sigma_min = std::min(sigma_min, diag.steering.pinv.sigma_min);
+      gimbal_max = std::max(gimbal_max, FullPlant::gamma(xp).cwiseAbs().maxCoeff());
+      wheel_max = std::max(wheel_max, (FullPlant::Omega_w(xp) - Omega0).cwiseAbs().maxCoeff());
+      drift_max = std::max(drift_max, (plant.momentum_N(xp) - H_true).norm());
+      if (csv) {
+        row.assign({t, ypr(2), ypr(1), ypr(0), e_p, e_rate});
+        for (int i = 0; i < kM; ++i) row.push_back(FullPlant::gamma(xp)(i));
+        for (int j = 0; j < kN; ++j) row.push_back(FullPlant::Omega_w(xp)(j));
+        for (int k = 0; k < 3; ++k) row.push_back(ctrl.theta_F()(k));
+        for (int k = 0; k < 3; ++k) row.push_back(H_est(k));
+        for (int k = 0; k < 3; ++k) row.push_back(H_true(k));
+        for (int i = 0; i < kM; ++i) row.push_back(ctrl.theta_cG(i).squaredNorm());
+        for (int j = 0; j < kN; ++j) row.push_back(ctrl.theta_wG(j).squaredNorm());
+        row.push_back(diag.steering.pinv.sigma_min);
+        if (t == p.get_number("duration_s")) csv->record_final(row.data()); else csv->record(row.data());
+      }
+    };
+    SampledDataOptions opt;
+    opt.t_end = p.get_number("duration_s");
+    opt.sample_period = T;
+    if (p.get_name("integrator") == "rk4") {
+      Rk4Integrator<HybridSimPlant> integ(sim, T);
+      run_sampled_data(sim, integ, x, opt, control, observe);
+    } else {
+      CvodeOptions co;
+      co.rtol = 1e-10;
+      co.atol = 1e-12;
+      CvodeIntegrator<HybridSimPlant> integ(sim, co);
+      run_sampled_data(sim, integ, x, opt, control, observe);
+    }
+    if (csv) csv->close();
+
+    RunResult r;
+    r.metrics = {{"euler_err_ss_max_rad", e_att_max},
+                 {"principal_err_ss_max_rad", e_p_max},
+                 {"rate_err_ss_max_rad_s", e_rate_max},
+                 {"proj_norm2_max", proj_max},
+                 {"proj_safeguard_count", double(ctrl.safeguard_count())},
+                 {"momentum_drift_rel", drift_max / std::max(H_true.norm(), 1e-12)},
+                 {"momentum_est_err_final_Nms", E_H_final},
+                 {"pinv_sigma_min", sigma_min},
+                 {"gimbal_angle_max_rad", gimbal_max},
+                 {"wheel_speed_max_rad_s", wheel_max},
+                 {"momentum_est_err_initial_Nms", E_H0},
+                 {"momentum_est_err_late_max_Nms", E_H_late_max},
+                 {"nonok_steps", double(nonok)}};
+    if (adaptive_ && p.get_name("baseline") == "run" && cp.alpha_F + cp.alpha_G > 0.0) {
+      // R5 needs the same configuration without adaptation: run it (no CSV) and take ratios.
+      ParamSet base = p;
+      base.set("alpha_F", "0");
+      base.set("alpha_G", "0");
+      base.set("baseline", "skip");
+      RunContext quiet = ctx;
+      quiet.csv_path.clear();
+      const RunResult b = run(base, quiet);
+      const double b_att = b.metrics[0].second, b_rate = b.metrics[2].second;
+      const double ratio_att = b_att / e_att_max, ratio_rate = b_rate / e_rate_max;
+      r.metrics.push_back({"improvement_ratio_euler", ratio_att});
+      r.metrics.push_back({"improvement_ratio_rate", ratio_rate});
+      char buf[128];
+      std::snprintf(buf, sizeof buf,
+                    "%.2g x attitude, %.2g x rate (below the paper's 100x/10x, which needs "
+                    "parameters the paper does not give; spec A.6)",
+                    ratio_att, ratio_rate);
+      r.claims.push_back({"paper", std::string("R5 improvement over no adaptation: 2 orders attitude, 1 order rate") +
+                                       (bias_ ? " (A-BIAS)" : ""),
+                          "100x / 10x (paper); spec: >= 5x / >= 4x on A-REF (PROTO 6.7x / 6.3x)", buf,
+                          bias_ ? std::optional<bool>() : std::optional<bool>(ratio_att >= 5.0 && ratio_rate >= 4.0)});
+    }
+    add_claims(r, e_att_max, e_p_max, e_rate_max, proj_max, ctrl.safeguard_count(), sigma_min, E_H0,
+               E_H_late_max, gimbal_max, wheel_max, mode == "D1");
+    const std::string n = name();
+    r.plots = {
+        {n + "-euler.png", "Euler-angle (3-2-1) tracking error", "t",
+         {"euler_err_1", "euler_err_2", "euler_err_3"}, "error [rad]", false},
+        {n + "-rate.png", "Rate tracking error |omega - C_e omega_f|", "t", {"rate_err"},
+         "rate error [rad/s]", true},
+        {n + "-gimbal.png", "Gimbal angles", "t", {"gamma_1", "gamma_2", "gamma_3", "gamma_4"},
+         "gamma [rad]", false},
+        {n + "-wheels.png", "Wheel speeds", "t", {"Omega_w_1", "Omega_w_2", "Omega_w_3"},
+         "Omega_w [rad/s]", false},
+        {n + "-momentum.png", "Momentum estimate H_I^n + theta_F vs truth", "t",
+         {"H_est_1", "H_est_2", "H_est_3", "H_true_1", "H_true_2", "H_true_3"}, "H_I [N m s]", false},
+        {n + "-theta-cG.png", "CMG deviation estimates |theta_cG|^2 (bound 0.15)", "t",
+         {"theta_cG_norm2_1", "theta_cG_norm2_2", "theta_cG_norm2_3", "theta_cG_norm2_4"}, "[-]", false},
+        {n + "-theta-wG.png", "Wheel deviation estimates |theta_wG|^2 (bound 0.15)", "t",
+         {"theta_wG_norm2_1", "theta_wG_norm2_2", "theta_wG_norm2_3"}, "[-]", false},
+    };
+    return r;
+  }
+
+ private:
+  void add_claims(RunResult& r, double e_att, double e_p, double e_rate, double proj, unsigned safeguards,
+                  double sigma_min, double E_H0, double E_H_late, double gimbal, double wheel,
+                  bool reference_set) const {
+    char ours[128];
+    auto fmt = [&](const char* f, double a, double b = 0) {
+      std::snprintf(ours, sizeof ours, f, a, b);
+      return std::string(ours);
+    };
+    if (bias_) {
+      r.claims.push_back({"paper", adaptive_ ? "A-BIAS adaptive: attitude error (informative)"
+                                             : "A-BIAS no adaptation: attitude error (informative)",
+                          "PROTO θ_p " + std::string(adaptive_ ? "4.5e-4" : "1.46e-2") + " rad",
+                          fmt("θ_p %.3g rad (Euler %.3g)", e_p, e_att), std::nullopt});
+      return;
+    }
+    if (!adaptive_) {
+      r.claims.push_back({"paper", "R1 no adaptation: Euler error '0.3 rad order' (Fig. 2)",
+                          "0.3 rad order (PROTO 8.35e-4)", fmt("%.3g rad (θ_p %.3g)", e_att, e_p),
+                          std::nullopt});
+      r.claims.push_back({"paper", "R2 no adaptation: rate error '1e-3 rad/s order' (Fig. 3)",
+                          "1e-3 rad/s order (PROTO 3.95e-5)", fmt("%.3g rad/s", e_rate), std::nullopt});
+      return;
+    }
+    const bool within_proto = !reference_set || std::abs(e_att / 1.25e-4 - 1.0) <= 0.3;
+    r.claims.push_back({"paper", "R3 adaptive: Euler error settles at 0.003 rad (Fig. 4)",
+                        "<= 3e-3 rad (PROTO 1.25e-4 ±30%)", fmt("%.3g rad (θ_p %.3g)", e_att, e_p),
+                        e_att <= 3e-3 && within_proto});
+    r.claims.push_back({"paper", "R4 adaptive: rate error '1e-4 rad/s order' (Fig. 5)",
+                        "<= 1e-4 rad/s (PROTO 6.27e-6)", fmt("%.3g rad/s", e_rate), e_rate <= 1e-4});
+    r.claims.push_back({"paper", "R6 momentum estimate approaches the true momentum (Figs. 8-9)",
+                        "E_H(t) < E_H(0) for t >= 100 s (PROTO 0.335 -> 0.11..0.27)",
+                        fmt("E_H(0) %.3g, max after 100 s %.3g N m s", E_H0, E_H_late), E_H_late < E_H0});
+    r.claims.push_back({"paper", "R7 |theta_G|^2 never exceeds beta+delta = 0.15 (Figs. 10-11)",
+                        "<= 0.15, safeguard count 0 (PROTO 4e-4)",
+                        fmt("%.3g, safeguards %.0f", proj, double(safeguards)),
+                        proj <= 0.15 + 1e-9 && safeguards == 0});
+    r.claims.push_back({"paper", "R8 gimbal angles and wheel speeds bounded (Figs. 6-7)",
+                        "bounded (PROTO 0.274 rad; 8.3e-4 rad/s)",
+                        fmt("%.3g rad; %.3g rad/s", gimbal, wheel), std::nullopt});
+    r.claims.push_back({"paper", "R9 pseudo-inverse exists throughout", "sigma_min(X) > 0 (PROTO 0.0170)",
+                        fmt("%.4g", sigma_min), sigma_min > 0.0});
+  }
+
+  bool adaptive_, bias_;
+};
+
+}  // namespace
+
+std::unique_ptr<Scenario> make_hybrid_adaptive() { return std::make_unique<HybridScenario>(true, false); }
+std::unique_ptr<Scenario> make_hybrid_nonadaptive() { return std::make_unique<HybridScenario>(false, false); }
+std::unique_ptr<Scenario> make_hybrid_adaptive_bias() { return std::make_unique<HybridScenario>(true, true); }
+std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias() { return std::make_unique<HybridScenario>(false, true); }
+
+}  // namespace adcs::sim
