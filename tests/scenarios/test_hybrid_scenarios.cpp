@@ -4,29 +4,14 @@
 
 #include <string>
 
-#include "scenarios/registry.hpp"
+#include "scenario_test_util.hpp"
 
 namespace {
 using adcs::sim::ParamSet;
 using adcs::sim::RunResult;
 
-double metric(const RunResult& r, const std::string& name) {
-  for (const auto& [k, v] : r.metrics)
-    if (k == name) return v;
-  ADD_FAILURE() << "no metric " << name;
-  return NAN;
-}
-
-RunResult run(const std::string& scenario, std::vector<std::pair<std::string, std::string>> sets = {}) {
-  const adcs::sim::Scenario* s = adcs::sim::find_scenario(scenario);
-  EXPECT_NE(s, nullptr);
-  ParamSet p;
-  s->declare(p);
-  for (const auto& [k, v] : sets) p.set(k, v);
-  adcs::sim::RunContext ctx;
-  ctx.quiet = true;
-  return s->run(p, ctx);
-}
+using adcs::sim::test::metric;
+using adcs::sim::test::run;
 
 TEST(HybridAref, PaperClaimsR3toR7andR9) {
   const RunResult r = run("hybrid-adaptive");
@@ -65,15 +50,9 @@ namespace {
 // bit for bit; another seed, another set.
 TEST(HybridAref, SeedDrawsAReproducibleModeADeviationSet) {
   auto short_run = [](std::uint64_t seed) {
-    const adcs::sim::Scenario* s = adcs::sim::find_scenario("hybrid-adaptive");
-    ParamSet p;
-    s->declare(p);
-    p.set("duration_s", "30");
-    p.set("window_s", "[10, 30]");
-    p.set("baseline", "skip");
-    adcs::sim::RunContext ctx;
-    ctx.seed = seed;
-    return metric(s->run(p, ctx), "euler_err_ss_max_rad");
+    return metric(run("hybrid-adaptive",
+                      {{"duration_s", "30"}, {"window_s", "[10, 30]"}, {"baseline", "skip"}}, seed),
+                  "euler_err_ss_max_rad");
   };
   const double a = short_run(7), b = short_run(7), c = short_run(8), d1 = short_run(0);
   EXPECT_EQ(a, b);

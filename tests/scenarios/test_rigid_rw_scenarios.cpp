@@ -5,32 +5,15 @@
 #include <cstring>
 #include <string>
 
-#include "scenarios/registry.hpp"
+#include "scenario_test_util.hpp"
 
 namespace {
 using adcs::sim::ParamSet;
 using adcs::sim::RunContext;
 using adcs::sim::RunResult;
 
-double metric(const RunResult& r, const std::string& name) {
-  for (const auto& [k, v] : r.metrics)
-    if (k == name) return v;
-  ADD_FAILURE() << "no metric " << name;
-  return NAN;
-}
-
-RunResult run(const std::string& scenario, std::vector<std::pair<std::string, std::string>> sets,
-              std::uint64_t seed = 0) {
-  const adcs::sim::Scenario* s = adcs::sim::find_scenario(scenario);
-  EXPECT_NE(s, nullptr);
-  ParamSet p;
-  s->declare(p);
-  for (const auto& [k, v] : sets) p.set(k, v);
-  RunContext ctx;
-  ctx.seed = seed;
-  ctx.quiet = true;
-  return s->run(p, ctx);
-}
+using adcs::sim::test::metric;
+using adcs::sim::test::run;
 
 // Issue 2: a torque-free rigid body with reaction wheels conserves inertial angular momentum
 // and kinetic energy, relative drift <= 1e-9 over 1000 s.

@@ -1,0 +1,35 @@
+#pragma once
+// Helpers shared by the scenario tests: look a metric up by name, run a scenario with overrides.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scenarios/registry.hpp"
+
+namespace adcs::sim::test {
+
+inline double metric(const RunResult& r, const std::string& name) {
+  for (const auto& [k, v] : r.metrics)
+    if (k == name) return v;
+  ADD_FAILURE() << "no metric " << name;
+  return NAN;
+}
+
+inline RunResult run(const std::string& scenario,
+                     const std::vector<std::pair<std::string, std::string>>& sets = {},
+                     std::uint64_t seed = 0) {
+  const Scenario* s = find_scenario(scenario);
+  EXPECT_NE(s, nullptr) << scenario;
+  ParamSet p;
+  s->declare(p);
+  for (const auto& [k, v] : sets) p.set(k, v);
+  RunContext ctx;
+  ctx.seed = seed;
+  ctx.quiet = true;
+  return s->run(p, ctx);
+}
+
+}  // namespace adcs::sim::test
