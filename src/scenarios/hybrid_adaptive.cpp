@@ -83,6 +83,8 @@ class HybridScenario final : public Scenario {
     p.name("integrator", "rk4", {"rk4", "adams"},
            "rk4: one RK4 step per control period (spec §A.5); adams: CVODE Adams");
     p.number("record_every", 100, "samples", "CSV decimation (1 ms samples)");
+    p.name("initial_estimates", "zero", {"zero", "truth"},
+           "spec §A.5: Θ̂(0) = 0; truth = oracle check S11 (Θ̂ set to the true deviations)");
     if (adaptive_)
       p.name("baseline", "run", {"run", "skip"},
              "run: also simulate alpha_F = alpha_G = 0 for the R5 improvement ratio");
@@ -142,6 +144,14 @@ class HybridScenario final : public Scenario {
     cp.H_I_n = p.get_name("H_I_n") == "zero" ? Vec3::Zero() : H_n_model;
     Controller ctrl(cp);
     if (ctrl.status() != Status::ok) throw ParamError("controller parameters rejected (alpha, beta, delta, gains)");
+    if (p.get_name("initial_estimates") == "truth") {  // spec §A.7 S11: the oracle controller
+      Mat<6, kM> th_c;
+      Mat<3, kN> th_w;
+      for (int i = 0; i < kM; ++i) th_c.col(i) = dev.theta_cG(i);
+      for (int j = 0; j < kN; ++j) th_w.col(j) = dev.theta_wG(j);
+      if (ctrl.set_estimates(Vec3(H_true - cp.H_I_n), th_c, th_w) != Status::ok)
+        throw ParamError("initial_estimates=truth: deviations outside the projection ball");
+    }
 
     HybridSimPlant sim{&plant, SinusoidalRateReference{}};
     HybridSimPlant::State x;

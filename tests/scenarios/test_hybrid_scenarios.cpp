@@ -60,3 +60,12 @@ TEST(HybridAref, SeedDrawsAReproducibleModeADeviationSet) {
   EXPECT_NE(a, d1);
 }
 }  // namespace
+
+namespace {
+// Spec §A.7 S11: with the true Θ and no adaptation, TP-FULL (J(γ) variation, gimbal momentum)
+// still tracks to ~1.5e-7 rad over [100, 800] s: the truth-plant-only mismatch is negligible.
+TEST(HybridAref, OracleOnTheFullPlantS11) {
+  const RunResult r = run("hybrid-nonadaptive", {{"initial_estimates", "truth"}, {"window_s", "[100, 800]"}});
+  EXPECT_NEAR(metric(r, "principal_err_ss_max_rad") / 1.5e-7, 1.0, 0.3);  // PROTO 1.5e-7
+}
+}  // namespace
