@@ -138,9 +138,10 @@ class HybridAdaptive {
     const Mat3 Y_F = -GJ * skew(w) * mrp_to_dcm(sigma);             // seed 001 eq. (16)
     const Vec3 F_n = G_dot * w + Y_F * p_.H_I_n;                    // seed 001 eq. (15)
     // Steps 6-8: X = G*n + Y_G Θ̂_G column by column (eqs. (17)-(20)).
+    const Vec<M> cos_g = m.gamma.array().cos(), sin_g = m.gamma.array().sin();  // once per step
     Mat<3, L> X;
     for (int i = 0; i < M; ++i) {
-      const double c = std::cos(m.gamma(i)), s = std::sin(m.gamma(i));
+      const double c = cos_g(i), s = sin_g(i);
       const Vec3 t_n = c * p_.nominal.A_ct0.col(i) - s * p_.nominal.A_cs0.col(i);   // eq. (3)
       const Vec3 dt = c * theta_c_.col(i).template head<3>() - s * theta_c_.col(i).template tail<3>();
       X.col(i) = -p_.nominal.h_cw(i) * (GJ * (t_n + dt));                            // eq. (19)
@@ -162,38 +163,26 @@ class HybridAdaptive {
     if (!all_finite(u)) return Status::out_of_range;
 
     // Steps 11-13: adaptation, explicit Euler over T_c; commit only if everything is finite.
-    const double T = p_.control_period_s;
-    const Vec3 theta_F_next = theta_F_ + T * p_.alpha_F * (Y_F.transpose() * PBe);  // eq. (25)
+    const Vec3 theta_F_next = theta_F_ + p_.control_period_s * p_.alpha_F * (Y_F.transpose() * PBe);  // eq. (25)
     Mat<6, M> theta_c_next;
     Mat<3, N> theta_w_next;
     int active_blocks = 0;
     bool safeguard = false;
-    const double bound = p_.beta_G + p_.delta_G;
     const Vec3 GJtPBe = GJ.transpose() * PBe;
     for (int i = 0; i < M; ++i) {
-      const double c = std::cos(m.gamma(i)), s = std::sin(m.gamma(i));
       Vec6 Phi;  // Y_cGiᵀ PBe u_i, Y_cGi = −h_cw,i GJ [c I3, −s I3]        eqs. (19), (26)
-      Phi << -p_.nominal.h_cw(i) * c * GJtPBe, p_.nominal.h_cw(i) * s * GJtPBe;
-      Phi *= u(i);
-      Vec6 rate;
-      bool active = false;
-      const Vec6 th = theta_c_.col(i);
-      if (smooth_projection<6>(th, Phi, proj_, rate, &active) != Status::ok) return Status::out_of_range;
-      Vec6 next = th + T * rate;
-      safeguard = radial_safeguard<6>(next, bound) || safeguard;
+      Phi << -p_.nominal.h_cw(i) * cos_g(i) * GJtPBe, p_.nominal.h_cw(i) * sin_g(i) * GJtPBe;
+      Vec6 next;
+      if (!update_block<6>(theta_c_.col(i), Phi * u(i), next, active_blocks, safeguard))
+        return Status::out_of_range;
       theta_c_next.col(i) = next;
-      active_blocks += active;
     }
     for (int j = 0; j < N; ++j) {
       const Vec3 Phi = (-p_.nominal.I_wws(j) * u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, eq. (20)
-      Vec3 rate;
-      bool active = false;
-      const Vec3 th = theta_w_.col(j);
-      if (smooth_projection<3>(th, Phi, proj_, rate, &active) != Status::ok) return Status::out_of_range;
-      Vec3 next = th + T * rate;
-      safeguard = radial_safeguard<3>(next, bound) || safeguard;
+      Vec3 next;
+      if (!update_block<3>(theta_w_.col(j), Phi, next, active_blocks, safeguard))
+        return Status::out_of_range;
       theta_w_next.col(j) = next;
-      active_blocks += active;
     }
     if (!all_finite(theta_F_next) || !all_finite(theta_c_next) || !all_finite(theta_w_next))
       return Status::out_of_range;
@@ -236,6 +225,20 @@ class HybridAdaptive {
   }
 
  private:
+  //! One Θ_G block over a control period: θ⁺ = θ + T Proj(θ, Φ) (eq. (26), explicit Euler,
+  //! spec §A.3 step 13), then the radial safeguard to β + δ. False on a projection failure.
+  template <int K>
+  bool update_block(const Vec<K>& theta, const Vec<K>& Phi, Vec<K>& next, int& active_blocks,
+                    bool& safeguard) const noexcept {
+    Vec<K> rate;
+    bool active = false;
+    if (smooth_projection<K>(theta, Phi, proj_, rate, &active) != Status::ok) return false;
+    next = theta + p_.control_period_s * rate;
+    safeguard = radial_safeguard<K>(next, p_.beta_G + p_.delta_G) || safeguard;
+    active_blocks += active;
+    return true;
+  }
+
   Params p_;
   Mat<3, 6> K_ = Mat<3, 6>::Zero();
   Mat6 P_ = Mat6::Zero();
