@@ -5,6 +5,7 @@
 #include <random>
 
 #include "adcs/plant/rigid_body_rw.hpp"
+#include "directional_derivative.hpp"
 
 namespace {
 using Plant = adcs::RigidBodyRw<4>;
@@ -27,14 +28,6 @@ Plant::State random_state(std::mt19937_64& rng) {
   return x;
 }
 
-// d/dt f(x(t)) by central differences along the flow direction xdot.
-template <class F>
-auto directional(const F& f, const Plant::State& x, const Plant::State& xdot, double h) {
-  using R = decltype(f(x));  // evaluate: an Eigen expression would dangle on return
-  const R hi = f(Plant::State(x + h * xdot));
-  const R lo = f(Plant::State(x - h * xdot));
-  return R((hi - lo) / (2.0 * h));
-}
 
 TEST(RigidBodyRw, ValidParameters) {
   const Plant plant(params());

@@ -9,6 +9,7 @@
 
 #include "adcs/plant/vscmg_cluster.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
+#include "directional_derivative.hpp"
 
 namespace {
 using Full = adcs::VscmgFullPlant<4, 3>;
@@ -36,14 +37,6 @@ Full::Input random_input(std::mt19937_64& rng) {
   return in;
 }
 
-// d/dt f(x(t)) by central differences along the flow direction xdot.
-template <class F>
-auto directional(const F& f, const Full::State& x, const Full::State& xdot, double h) {
-  using R = decltype(f(x));  // evaluate: an Eigen expression would dangle on return
-  const R hi = f(Full::State(x + h * xdot));
-  const R lo = f(Full::State(x - h * xdot));
-  return R((hi - lo) / (2.0 * h));
-}
 
 TEST(VscmgCluster, S5NominalAxesOrthonormalAndRotorBookkeeping) {
   const Geometry g = adcs::pyramid_4cmg_3rw_nominal();
