@@ -62,9 +62,10 @@ BENCHMARK(BM_RwAllocation_Step);
 
 // One HybridAdaptive::step() (seed 001, M = 4 CMGs, N = 3 wheels): regressors, steering via
 // LDLT of X X^T, adaptation with projection. Inputs move each iteration.
-void BM_HybridAdaptive_Step(benchmark::State& state) {
+void hybrid_adaptive_step(benchmark::State& state, adcs::AdaptationStep adaptation) {
   adcs::HybridAdaptive<4, 3>::Params p;
   p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  p.adaptation_step = adaptation;
   adcs::HybridAdaptive<4, 3> ctrl(p);
   adcs::HybridAdaptive<4, 3>::Measurement m;
   m.sigma_BN << 0.3, -0.2, 0.1;
@@ -82,7 +83,14 @@ void BM_HybridAdaptive_Step(benchmark::State& state) {
     if (static_cast<long>(k) % 4096 == 0) ctrl.reset();  // keep the estimates near nominal
   }
 }
+void BM_HybridAdaptive_Step(benchmark::State& state) {
+  hybrid_adaptive_step(state, adcs::AdaptationStep::explicit_euler);  // the paper's update
+}
 BENCHMARK(BM_HybridAdaptive_Step);
+void BM_HybridAdaptiveNormalized_Step(benchmark::State& state) {
+  hybrid_adaptive_step(state, adcs::AdaptationStep::normalized);  // ours, for 5-20 Hz
+}
+BENCHMARK(BM_HybridAdaptiveNormalized_Step);
 
 // Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
 void BM_Pinv3x4(benchmark::State& state) {

@@ -11,6 +11,7 @@
 //  - run() throws ParamError for an invalid parameter value (adcs-sim exits 2) and any other
 //    exception for a simulation failure (adcs-sim exits 1). Either way no output is kept.
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,6 +50,18 @@ struct RunResult {
   std::vector<std::pair<std::string, double>> metrics;  // ordered; non-finite => JSON null
   std::vector<Claim> claims;
   std::vector<PlotSpec> plots;
+
+  //! The metric's value; NaN when there is no metric of that name (see has_metric).
+  double metric(const std::string& name) const {
+    for (const auto& [k, v] : metrics)
+      if (k == name) return v;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  bool has_metric(const std::string& name) const {
+    for (const auto& kv : metrics)
+      if (kv.first == name) return true;
+    return false;
+  }
 };
 
 class Scenario {

@@ -160,6 +160,98 @@ TEST(HybridAdaptive, NoDeviationNoAdaptationTracksExactlyS14) {
   EXPECT_NEAR(e_at[0] / e_at[1], 2.0, 0.2);
 }
 
+TEST(HybridAdaptive, CommandsArePhysicalRatesAndAccelerationsS15) {
+  // Spec S15: u_1..4 in rad/s, u_5..7 in rad/s², not normalised. (a) X's columns are
+  // −h_cw,i G J⁻¹ t_i [1/s per rad/s] and −I_ws,j G J⁻¹ s_wj [1/s² per rad/s²]; (b) the command,
+  // applied to the SI plant, produces exactly the σ̈ the law asked for; (c) ten times the rotor
+  // momentum and wheel inertia needs a tenth of the rates and accelerations.
+  adcs::VscmgParams<4, 3> pp;
+  pp.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  pp.truth = pp.nominal;
+  const Plant plant(pp);
+  Ctrl::Params cp = controller_params(0.0, 0.0);
+  Plant::State x = Plant::State::Zero();
+  x.head<3>() << 0.1, -0.2, 0.05;
+  x.segment<3>(3) << 0.01, -0.02, 0.005;
+  x.segment<4>(6) << 0.3, -0.1, 0.2, 0.4;
+  cp.H_I_n = plant.momentum_N(x);
+  Ctrl c(cp);
+  Ctrl::Measurement m;
+  m.sigma_BN = Plant::sigma_BN(x);
+  m.omega_BN_B = Plant::omega_BN_B(x);
+  m.gamma = Plant::gamma(x);
+  adcs::MrpReferenceSample r;
+  r.sigma_ddot << 1e-4, -2e-4, 3e-4;
+  Ctrl::Command out;
+  Ctrl::Diagnostics d;
+  ASSERT_EQ(c.step(m, r, out, &d), Status::ok);
+
+  const adcs::Mat3 GJ = adcs::mrp_G(m.sigma_BN) * c.J_n().inverse();
+  const adcs::Mat<3, 4> T = pp.nominal.A_ct(m.gamma);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_LT((d.X.col(i) + pp.nominal.h_cw(i) * GJ * T.col(i)).norm(), 1e-15) << i;
+  for (int j = 0; j < 3; ++j)
+    EXPECT_LT((d.X.col(4 + j) + pp.nominal.I_wws(j) * GJ * pp.nominal.A_ws.col(j)).norm(), 1e-15) << j;
+
+  Plant::State dx;
+  plant.derivative(0.0, x, out.u, dx);
+  const Vec3 sigma_dot = adcs::mrp_G(m.sigma_BN) * m.omega_BN_B;
+  const Vec3 sigma_ddot = adcs::mrp_G_dot(m.sigma_BN, sigma_dot) * m.omega_BN_B +
+                          adcs::mrp_G(m.sigma_BN) * dx.segment<3>(3);
+  const Vec3 asked = -c.K() * d.e + r.sigma_ddot;  // eq. (24) with the exact model
+  EXPECT_LT((sigma_ddot - asked).norm(), 1e-12 * asked.norm());
+
+  Ctrl::Params cp10 = cp;
+  cp10.nominal.h_cw *= 10.0;
+  cp10.nominal.I_wws *= 10.0;
+  cp10.nominal.J_s -= 9.0 * 0.02 * adcs::Mat3::Identity();  // keep J_n: the wheels are on the axes
+  Ctrl c10(cp10);
+  ASSERT_NEAR((c10.J_n() - c.J_n()).norm(), 0.0, 1e-12);
+  Ctrl::Command out10;
+  ASSERT_EQ(c10.step(m, r, out10), Status::ok);
+  EXPECT_LT((10.0 * out10.u - out.u).norm(), 1e-12 * out.u.norm());
+}
+
+TEST(HybridAdaptive, NormalizedStepIsThePaperLawWhenTheLoopGainIsSmall) {
+  // adapt/normalized_step.hpp: the scale is 1/(1 + λ/λ_max) with λ = T α ‖Y‖² ‖P22‖; with a
+  // tiny T the normalized and explicit updates agree to O(λ/λ_max); with a huge one the step of
+  // Θ̂_F shrinks to about λ_max/λ of the explicit step, never changing its direction.
+  EXPECT_EQ(adcs::normalized_step_scale(0.0, 0.2), 1.0);
+  EXPECT_DOUBLE_EQ(adcs::normalized_step_scale(0.2, 0.2), 0.5);
+  EXPECT_EQ(adcs::normalized_step_scale(1.0, 0.0), 1.0);  // invalid limit: no scaling
+  EXPECT_EQ(adcs::normalized_step_scale(std::numeric_limits<double>::infinity(), 0.2), 0.0);
+  Ctrl::Params bad = controller_params();
+  bad.max_step_gain = 0.0;
+  EXPECT_EQ(Ctrl(bad).status(), Status::invalid_parameter);
+
+  Ctrl::Measurement m;
+  m.sigma_BN << 0.8, -0.5, 0.3;
+  m.omega_BN_B << 0.03, -0.02, 0.04;
+  m.gamma << 0.1, 0.2, -0.3, 0.4;
+  adcs::MrpReferenceSample r;
+  r.sigma << 0.79, -0.49, 0.31;
+  for (double T : {1e-6, 10.0}) {
+    Ctrl::Params pe = controller_params();
+    pe.control_period_s = T;
+    Ctrl::Params pn = pe;
+    pn.adaptation_step = adcs::AdaptationStep::normalized;
+    Ctrl ce(pe), cn(pn);
+    Ctrl::Command oe, on;
+    Ctrl::Diagnostics dn;
+    ASSERT_TRUE(adcs::usable(ce.step(m, r, oe)));
+    ASSERT_TRUE(adcs::usable(cn.step(m, r, on, &dn)));
+    EXPECT_EQ(oe.u, on.u);  // the command uses the estimates before the update
+    const Vec3 de = ce.theta_F(), dn_F = cn.theta_F();
+    ASSERT_GT(de.norm(), 0.0);
+    EXPECT_NEAR(dn_F.dot(de) / (dn_F.norm() * de.norm()), 1.0, 1e-12);  // same direction
+    EXPECT_NEAR(dn_F.norm() / de.norm(), dn.theta_F_step_scale, 1e-12);
+    if (T < 1e-3)
+      EXPECT_GT(dn.theta_F_step_scale, 0.999);
+    else
+      EXPECT_LT(dn.theta_F_step_scale, 1e-2);
+  }
+}
+
 TEST(HybridAdaptive, AdaptationReducesTrackingErrorOnTpCtrl) {
   const adcs::VscmgParams<4, 3> pp = adcs::vscmg_params_A_REF();
   Loop fixed(pp, controller_params(0.0, 0.0), Plant::State::Zero());

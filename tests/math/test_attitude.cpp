@@ -130,6 +130,18 @@ TEST(So3, SkewIsTheCrossProductAndVeeItsInverse) {
   }
 }
 
+TEST(So3, ExpIsRodriguesAndMatchesEigenAngleAxis) {
+  for (const Vec3& phi : {Vec3(0.3, -1.2, 2.0), Vec3(1e-9, 2e-9, -1e-9), Vec3(0.0, 0.0, 0.0),
+                         Vec3(3e-5, -1e-5, 2e-5)}) {
+    const Mat3 R = adcs::so3_exp(phi);
+    const double a = phi.norm();
+    const Mat3 ref = a > 0 ? Eigen::AngleAxisd(a, phi / a).toRotationMatrix() : Mat3::Identity();
+    EXPECT_LT((R - ref).norm(), 1e-15) << phi.transpose();
+    EXPECT_LT((R * R.transpose() - Mat3::Identity()).norm(), 1e-15);
+    EXPECT_LT((R * phi - phi).norm(), 1e-15);  // the axis is fixed
+  }
+}
+
 TEST(So3, FrameRotationsAreProperRotationsMatchingTheSpec) {
   Rng rng(0x5032);
   for (int k = 0; k < kSamples; ++k) {

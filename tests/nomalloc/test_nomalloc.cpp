@@ -97,9 +97,12 @@ TEST(NoMalloc, MrpPdStepAndAllocation) {
   EXPECT_EQ(rejected, adcs::Status::non_finite_input);
 }
 
-TEST(NoMalloc, HybridAdaptiveStep) {
+class NoMallocHybrid : public ::testing::TestWithParam<adcs::AdaptationStep> {};
+
+TEST_P(NoMallocHybrid, HybridAdaptiveStep) {
   adcs::HybridAdaptive<4, 3>::Params p;
   p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  p.adaptation_step = GetParam();
   adcs::HybridAdaptive<4, 3> ctrl(p);
   ASSERT_EQ(ctrl.status(), adcs::Status::ok);
   adcs::HybridAdaptive<4, 3>::Measurement m;
@@ -125,6 +128,9 @@ TEST(NoMalloc, HybridAdaptiveStep) {
   EXPECT_EQ(not_usable, 0);
   EXPECT_EQ(rejected, adcs::Status::non_finite_input);
 }
+INSTANTIATE_TEST_SUITE_P(NoMalloc, NoMallocHybrid,
+                         ::testing::Values(adcs::AdaptationStep::explicit_euler,
+                                           adcs::AdaptationStep::normalized));
 
 TEST(NoMalloc, PlantDerivativeAndMathKernels) {
   adcs::RigidBodyRwParams<4> pp;

@@ -104,6 +104,34 @@ TEST(VscmgCluster, D1ValuesAndAREFInitialMomentum) {
   EXPECT_EQ((ctrl.J_n() - J_n).norm(), 0.0);
 }
 
+TEST(VscmgCluster, ModeBRigidMountingKeepsEachTriadOrthonormal) {
+  // Spec A.2.3 Mode B: rotated triads stay unit and orthogonal with g × s0 = t0; the deviation
+  // is first-order φ × v, so |Δ| <= |φ| |v|.
+  const Geometry nom = adcs::pyramid_4cmg_3rw_nominal();
+  adcs::Mat<3, 4> phi_c;
+  adcs::Mat<3, 3> phi_w;
+  phi_c << 0.05, -0.03, 0.01, 0.0, 0.02, 0.04, -0.05, 0.03, -0.01, 0.0, 0.05, -0.02;
+  phi_w << 0.01, -0.05, 0.03, 0.04, 0.0, -0.02, -0.03, 0.02, 0.05;
+  const auto dev = adcs::rigid_mounting_deviation(nom, phi_c, phi_w);
+  const Geometry g = adcs::apply_deviation(nom, dev);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(g.A_cg.col(i).norm(), 1.0, 1e-15);
+    EXPECT_NEAR(g.A_cs0.col(i).norm(), 1.0, 1e-15);
+    EXPECT_NEAR(g.A_cg.col(i).dot(g.A_cs0.col(i)), 0.0, 1e-15);
+    EXPECT_LT((g.A_cg.col(i).cross(g.A_cs0.col(i)) - g.A_ct0.col(i)).norm(), 1e-15);
+    EXPECT_LE(dev.theta_cG(i).head<3>().norm(), phi_c.col(i).norm() + 1e-15);
+    EXPECT_LT((dev.dA_cs0.col(i) - phi_c.col(i).cross(nom.A_cs0.col(i))).norm(),
+              phi_c.col(i).squaredNorm());
+  }
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_NEAR(g.A_ws.col(j).norm(), 1.0, 1e-15);
+    EXPECT_GT(dev.theta_wG(j).norm(), 0.0);
+  }
+  const auto none = adcs::rigid_mounting_deviation(nom, adcs::Mat<3, 4>::Zero().eval(),
+                                                   adcs::Mat<3, 3>::Zero().eval());
+  EXPECT_EQ(none.dA_cs0.norm() + none.dA_ct0.norm() + none.dA_cg.norm() + none.dA_ws.norm(), 0.0);
+}
+
 TEST(VscmgCluster, S4MomentumConservedAndTorqueBalanceOnRhs) {
   Full plant(adcs::vscmg_params_A_REF());
   std::mt19937_64 rng(17);

@@ -12,10 +12,8 @@
 namespace adcs::sim::test {
 
 inline double metric(const RunResult& r, const std::string& name) {
-  for (const auto& [k, v] : r.metrics)
-    if (k == name) return v;
-  ADD_FAILURE() << "no metric " << name;
-  return NAN;
+  if (!r.has_metric(name)) ADD_FAILURE() << "no metric " << name;
+  return r.metric(name);
 }
 
 inline RunResult run(const std::string& scenario,

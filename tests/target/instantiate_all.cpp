@@ -25,6 +25,9 @@ template Status smooth_projection<6>(const Vec<6>&, const Vec<6>&, const Project
 template Status smooth_projection<3>(const Vec<3>&, const Vec<3>&, const ProjectionParams&, Vec<3>&,
                                      bool*) noexcept;
 template bool radial_safeguard<6>(Vec<6>&, double) noexcept;
+template int saturate_each<7>(Vec<7>&, const Vec<7>&) noexcept;
+template VscmgDeviation<4, 3> rigid_mounting_deviation<4, 3>(const VscmgGeometry<4, 3>&,
+                                                            const Mat<3, 4>&, const Mat<3, 3>&) noexcept;
 template Status steer<7>(const Mat<3, 7>&, const Vec3&, const SteeringParams&, Vec<7>&,
                          SteeringInfo*) noexcept;
 }  // namespace adcs
@@ -42,6 +45,7 @@ extern "C" int adcs_target_smoke(const double* in, double* out) {
   const adcs::Status s2 = adcs::euler321_F(adcs::dcm_to_euler321(C), F321);
   const adcs::SinusoidalRateReference ref;
   const adcs::MrpReferenceSample r = ref.sample(in[3], sigma);
-  out[0] = Gd.sum() + F.sum() + F321.sum() + r.sigma_ddot.sum();
+  out[0] = Gd.sum() + F.sum() + F321.sum() + r.sigma_ddot.sum() + adcs::so3_exp(sigma).sum() +
+           adcs::normalized_step_scale(in[4], 0.2);
   return static_cast<int>(s) + static_cast<int>(s2);
 }

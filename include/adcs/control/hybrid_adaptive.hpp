@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "adcs/actuator/steering.hpp"
+#include "adcs/adapt/normalized_step.hpp"
 #include "adcs/adapt/projection.hpp"
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/status.hpp"
@@ -46,6 +47,12 @@ struct HybridAdaptiveParams {
   Vec3 H_I_n = Vec3::Zero();               //!< [N m s] nominal inertial momentum H_I^n (§A.3)
   double control_period_s = 1.0e-3;        //!< [s] T_c (spec §A.5: ≥ 5 ms is unstable)
   SteeringParams steering{};               //!< singularity-robust fallback threshold/damping
+  //! Estimate integration over T_c. explicit_euler is the paper's (spec §A.3 step 13, stable for
+  //! T_c ≤ 3 ms on A-REF); normalized keeps the per-step loop gain below max_step_gain so the
+  //! adaptation stays stable at flight rates (5-20 Hz); see adapt/normalized_step.hpp.
+  AdaptationStep adaptation_step = AdaptationStep::explicit_euler;
+  double max_step_gain = 0.2;              //!< [-] λ_max of the normalized step (ours; 0.2 keeps
+                                           //!< A-REF accuracy from 1 ms to 200 ms, docs/DECISIONS.md)
 };
 
 template <int M, int N>
@@ -68,6 +75,7 @@ struct HybridAdaptiveDiagnostics {
   Mat<3, M + N> X = Mat<3, M + N>::Zero();   //!< steering matrix G*n + Y_G Θ̂_G
   SteeringInfo steering{};                   //!< σ_min(X), mode used
   int projection_active_blocks = 0;          //!< blocks whose projection correction acted
+  double theta_F_step_scale = 1.0;           //!< [-] normalized-step scale applied to Θ̂_F (1 = none)
 };
 
 template <int M, int N>
@@ -85,13 +93,15 @@ class HybridAdaptive {
     const Mat6 A1 = double_integrator_closed_loop<3>(K_);
     ok = ok && solve_continuous_lyapunov<6>(A1, p_.Q_L, P_) == Status::ok;
     B0tP_ = P_.template bottomRows<3>();  // B0ᵀP with B0 = [0; I3]
+    P22_norm_ = P_.template bottomRightCorner<3, 3>().norm();  // ‖P22‖_F for the step gain
     J_n_ = p_.nominal.J_tr(Vec<M>::Zero());  // spec §A.3: J_n = J_tr(0), nominal geometry
     const Eigen::LLT<Mat3> llt(J_n_);
     ok = ok && llt.info() == Eigen::Success;
     J_n_inv_ = llt.solve(Mat3::Identity());
     proj_ = ProjectionParams{p_.alpha_G, p_.beta_G, p_.delta_G};
     ok = ok && valid(proj_) && std::isfinite(p_.alpha_F) && p_.alpha_F >= 0.0 &&
-         p_.control_period_s > 0.0 && all_finite(p_.H_I_n) && all_finite(J_n_inv_);
+         p_.control_period_s > 0.0 && all_finite(p_.H_I_n) && all_finite(J_n_inv_) &&
+         std::isfinite(p_.max_step_gain) && p_.max_step_gain > 0.0;
     status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles, Q_L, J_n, alpha, "
                              "beta, delta, period)")
                   ? Status::ok
@@ -162,23 +172,41 @@ class HybridAdaptive {
     if (!usable(steer_status)) return steer_status;
     if (!all_finite(u)) return Status::out_of_range;
 
-    // Steps 11-13: adaptation, explicit Euler over T_c; commit only if everything is finite.
-    const Vec3 theta_F_next = theta_F_ + p_.control_period_s * p_.alpha_F * (Y_F.transpose() * PBe);  // eq. (25)
+    // Steps 11-13: adaptation over T_c (explicit Euler, or its normalized step); commit only
+    // if everything is finite. Per-step loop gains λ = T α ‖Y‖² ‖P22‖ (adapt/normalized_step.hpp):
+    // ‖Y_F‖², and ‖Y_Gk u_k‖² = (h_cw,i or I_ws,j)² ‖GJ‖² u_k² since [c I3, −s I3] is orthonormal.
+    const double T = p_.control_period_s;
+    double scale_F = 1.0;
+    Vec<L> scale_u = Vec<L>::Ones();  // per-block scale of the Θ_G steps
+    if (p_.adaptation_step == AdaptationStep::normalized) {
+      const double k = T * P22_norm_, GJ2 = GJ.squaredNorm(), lim = p_.max_step_gain;
+      scale_F = normalized_step_scale(k * p_.alpha_F * Y_F.squaredNorm(), lim);
+      for (int i = 0; i < M; ++i) {
+        const double hu = p_.nominal.h_cw(i) * u(i);
+        scale_u(i) = normalized_step_scale(k * p_.alpha_G * GJ2 * hu * hu, lim);
+      }
+      for (int j = 0; j < N; ++j) {
+        const double Iu = p_.nominal.I_wws(j) * u(M + j);
+        scale_u(M + j) = normalized_step_scale(k * p_.alpha_G * GJ2 * Iu * Iu, lim);
+      }
+    }
+    const Vec3 theta_F_next = theta_F_ + (T * p_.alpha_F * scale_F) * (Y_F.transpose() * PBe);  // eq. (25)
     Mat<6, M> theta_c_next;
     Mat<3, N> theta_w_next;
     int active_blocks = 0;
     bool safeguard = false;
     const Vec3 GJtPBe = GJ.transpose() * PBe;
     for (int i = 0; i < M; ++i) {
+      const double h = p_.nominal.h_cw(i);
       Vec6 Phi;  // Y_cGiᵀ PBe u_i, Y_cGi = −h_cw,i GJ [c I3, −s I3]        eqs. (19), (26)
-      Phi << -p_.nominal.h_cw(i) * cos_g(i) * GJtPBe, p_.nominal.h_cw(i) * sin_g(i) * GJtPBe;
+      Phi << -h * cos_g(i) * GJtPBe, h * sin_g(i) * GJtPBe;
       Vec6 next;
-      if (!update_block<6>(theta_c_.col(i), Phi * u(i), next, active_blocks, safeguard))
+      if (!update_block<6>(theta_c_.col(i), Phi * (u(i) * scale_u(i)), next, active_blocks, safeguard))
         return Status::out_of_range;
       theta_c_next.col(i) = next;
     }
     for (int j = 0; j < N; ++j) {
-      const Vec3 Phi = (-p_.nominal.I_wws(j) * u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, eq. (20)
+      const Vec3 Phi = (-p_.nominal.I_wws(j) * u(M + j) * scale_u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, eq. (20)
       Vec3 next;
       if (!update_block<3>(theta_w_.col(j), Phi, next, active_blocks, safeguard))
         return Status::out_of_range;
@@ -191,7 +219,10 @@ class HybridAdaptive {
     theta_c_ = theta_c_next;
     theta_w_ = theta_w_next;
     if (safeguard) ++safeguard_count_;
-    if (diag) diag->projection_active_blocks = active_blocks;
+    if (diag) {
+      diag->projection_active_blocks = active_blocks;
+      diag->theta_F_step_scale = scale_F;
+    }
     last_.u = u;
     out = last_;  // step 14: the caller holds u over the period (ZOH)
     if (safeguard) return Status::constraint_violated;
@@ -243,6 +274,7 @@ class HybridAdaptive {
   Mat<3, 6> K_ = Mat<3, 6>::Zero();
   Mat6 P_ = Mat6::Zero();
   Mat<3, 6> B0tP_ = Mat<3, 6>::Zero();
+  double P22_norm_ = 0.0;
   Mat3 J_n_ = Mat3::Identity();
   Mat3 J_n_inv_ = Mat3::Identity();
   ProjectionParams proj_{};

@@ -24,6 +24,7 @@
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/math/mrp.hpp"
+#include "adcs/math/so3.hpp"
 
 namespace adcs {
 
@@ -116,6 +117,25 @@ inline VscmgGeometry<M, N> apply_deviation(const VscmgGeometry<M, N>& nominal,
   g.A_ws += dev.dA_ws;
   g.A_cg += dev.dA_cg;
   return g;
+}
+
+//! Mode B deviations (spec A.2.3, optional, physically rigid): each CMG triad (g_i, s_i0, t_i0)
+//! is rotated by exp([φ_c,i]x) and each wheel axis s_wj by exp([φ_w,j]x); the deviation is the
+//! rotated minus the nominal vector, so it stays inside the paper's parameterisation.
+//! φ_c (3 x M) and φ_w (3 x N) are rotation vectors [rad], columns per actuator.
+template <int M, int N>
+inline VscmgDeviation<M, N> rigid_mounting_deviation(const VscmgGeometry<M, N>& nominal,
+                                                     const Mat<3, M>& phi_c,
+                                                     const Mat<3, N>& phi_w) noexcept {
+  VscmgDeviation<M, N> d;
+  for (int i = 0; i < M; ++i) {
+    const Mat3 R = so3_exp(phi_c.col(i)) - Mat3::Identity();
+    d.dA_cg.col(i) = R * nominal.A_cg.col(i);
+    d.dA_cs0.col(i) = R * nominal.A_cs0.col(i);
+    d.dA_ct0.col(i) = R * nominal.A_ct0.col(i);
+  }
+  for (int j = 0; j < N; ++j) d.dA_ws.col(j) = (so3_exp(phi_w.col(j)) - Mat3::Identity()) * nominal.A_ws.col(j);
+  return d;
 }
 
 //! True geometry (used by the plant) and nominal geometry (the only one a controller sees).
