@@ -13,6 +13,7 @@ std::unique_ptr<Scenario> make_hybrid_adaptive();
 std::unique_ptr<Scenario> make_hybrid_nonadaptive();
 std::unique_ptr<Scenario> make_hybrid_adaptive_bias();
 std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias();
+std::unique_ptr<Scenario> make_hybrid_adaptive_10hz();
 
 namespace {
 
@@ -24,6 +25,7 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_hybrid_nonadaptive());
   v.push_back(make_hybrid_adaptive_bias());
   v.push_back(make_hybrid_nonadaptive_bias());
+  v.push_back(make_hybrid_adaptive_10hz());
   return v;
 }
 

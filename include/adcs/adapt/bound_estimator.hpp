@@ -1,0 +1,26 @@
+#pragma once
+// Adaptive estimate of an unknown bound μ* with σ-modification, seed 002 eq. (14):
+//   μ̂̇ = τ_μ (‖s‖ − γ μ̂)
+// integrated over one control period with ‖s‖ held (exact under ZOH, see rbf_network.hpp):
+//   μ̂⁺ = e^{−τ_μ γ T} μ̂ + (1 − e^{−τ_μ γ T})/γ · ‖s‖       (γ > 0; γ = 0: μ̂ + τ_μ T ‖s‖)
+// μ̂ ≥ 0 is invariant (spec B-S12): both terms are non-negative whenever μ̂ ≥ 0.
+#include <cmath>
+
+namespace adcs {
+
+inline double bound_estimate_step(double mu, double s_norm, double tau_mu, double gamma,
+                                  double T) noexcept {
+  if (gamma > 0.0) {
+    const double decay = std::exp(-tau_mu * gamma * T);
+    return decay * mu + (1.0 - decay) / gamma * s_norm;
+  }
+  return mu + tau_mu * T * s_norm;
+}
+
+//! The robust term μ̂² s/(μ̂‖s‖ + σ) of seed 002 eq. (12); its denominator is ≥ σ > 0 for μ̂ ≥ 0.
+template <class Vector>
+Vector bound_robust_term(double mu, const Vector& s, double sigma) noexcept {
+  return (mu * mu / (mu * s.norm() + sigma)) * s;
+}
+
+}  // namespace adcs

@@ -1,0 +1,68 @@
+#pragma once
+// Gaussian radial-basis-function network with a σ-modification weight law, seed 002 §3
+// (spec §B.3 steps 11, 12, 14):
+//
+//   h_j(x) = exp(−‖x − c_j‖² / (2 b_j²)),  j = 1..NH                          (RBF layer)
+//   D̂ = Ŵᵀ h(x)                                 (NO outputs, Ŵ is NH x NO)   (step 12)
+//   Ŵ̇_i = τ_i (s_i h − β Ŵ_i)                   (column i, output i)         eq. (13)
+//
+// The weight law is integrated over one control period T with s and h held (ZOH), exactly:
+//   Ŵ_i⁺ = e^{−τ_i β T} Ŵ_i + (1 − e^{−τ_i β T})/β · s_i h     (β > 0)
+// which is the explicit-Euler step to O(T²), never overshoots the leakage, and is what the
+// continuous law gives under the hold. β = 0 falls back to Ŵ_i⁺ = Ŵ_i + τ_i T s_i h.
+#include <cmath>
+
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+template <int NI, int NH>
+struct RbfLayerParams {
+  Mat<NI, NH> centers = Mat<NI, NH>::Zero();  //!< c_j (columns), units of the input x
+  Vec<NH> widths = Vec<NH>::Ones();           //!< b_j > 0, units of x
+};
+
+//! Gaussian layer h(x) with fixed centres and widths.
+template <int NI, int NH>
+class RbfLayer {
+ public:
+  using Params = RbfLayerParams<NI, NH>;
+  explicit RbfLayer(const Params& p) noexcept : p_(p) {
+    const bool ok = all_finite(p_.centers) && all_finite(p_.widths) && (p_.widths.array() > 0.0).all();
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+    for (int j = 0; j < NH; ++j) inv_two_b2_(j) = 1.0 / (2.0 * p_.widths(j) * p_.widths(j));
+  }
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+
+  //! h_j(x) ∈ (0, 1], = 1 at x = c_j. The caller checks x is finite.
+  Vec<NH> activations(const Vec<NI>& x) const noexcept {
+    Vec<NH> h;
+    for (int j = 0; j < NH; ++j) h(j) = std::exp(-(x - p_.centers.col(j)).squaredNorm() * inv_two_b2_(j));
+    return h;
+  }
+
+ private:
+  Params p_;
+  Vec<NH> inv_two_b2_ = Vec<NH>::Ones();
+  Status status_ = Status::ok;
+};
+
+//! One period of eq. (13) for all columns (see the header comment). tau (NO) >= 0, beta >= 0.
+template <int NH, int NO>
+Mat<NH, NO> rbf_weight_step(const Mat<NH, NO>& W, const Vec<NH>& h, const Vec<NO>& s,
+                            const Vec<NO>& tau, double beta, double T) noexcept {
+  Mat<NH, NO> next;
+  for (int i = 0; i < NO; ++i) {
+    if (beta > 0.0) {
+      const double decay = std::exp(-tau(i) * beta * T);
+      next.col(i) = decay * W.col(i) + ((1.0 - decay) / beta * s(i)) * h;
+    } else {
+      next.col(i) = W.col(i) + (tau(i) * T * s(i)) * h;
+    }
+  }
+  return next;
+}
+
+}  // namespace adcs

@@ -1,0 +1,206 @@
+#pragma once
+// Flexible spacecraft: rigid hub + P appendages (solar panels) with NM retained modes each,
+// hybrid-coordinate model of seed 002 eqs. (1)-(3) (spec §B.2, repaired reading B.4 #1):
+//
+//   J ω̇ + ω × J ω + Σ_l ( F_sl η̈_l + ω × F_sl η̇_l ) = u + d                 seed 002 eq. (1)
+//   η̈_l + 2 ξ_l Ω_l η̇_l + Ω_l² η_l + F_slᵀ ω̇ = 0                             seed 002 eq. (2)
+//   ϑ̇ = F(ϑ) ω   (x-y-z Euler angles, math/euler.hpp)                        seed 002 eq. (3)
+//
+// integrated in the explicit form (spec §B.2), which needs M_eff = J − Σ_l F_sl F_slᵀ SPD:
+//
+//   ω̇  = M_eff⁻¹ [ u + d − ω × J ω − Σ_l ω × F_sl η̇_l + Σ_l F_sl (2 ξ_l Ω_l η̇_l + Ω_l² η_l) ]
+//   η̈_l = −2 ξ_l Ω_l η̇_l − Ω_l² η_l − F_slᵀ ω̇
+//
+// and the Euler–Lagrange quantities of eq. (4) for the controllers and the tests:
+//
+//   ϑ̈ = A + B u + D̄,  A = −F Ġ ϑ̇ − F J⁻¹ (ω × J ω),  B = F J⁻¹,  B⁻¹ = J G,
+//   D̄ = F J⁻¹ [ d − Σ_l (F_sl η̈_l + ω × F_sl η̇_l) ],   J* = Gᵀ J G,  C = Gᵀ J Ġ − Gᵀ (J G ϑ̇)× G.
+//
+// Units: J [kg m²], F_sl [kg^½ m], η [kg^½ m], Ω [rad/s], ξ [-], u and d [N m], angles [rad].
+#include <array>
+#include <limits>
+
+#include <Eigen/Cholesky>
+
+#include "adcs/core/failure_hook.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/math/euler.hpp"
+#include "adcs/math/so3.hpp"
+
+namespace adcs {
+
+//! Parameters of a hub with P appendages of NM modes each (seed 002 Table 1 for P = 2, NM = 4).
+template <int P, int NM>
+struct FlexibleSpacecraftParams {
+  static_assert(P >= 1 && NM >= 1, "FlexibleSpacecraftParams: need P >= 1 panels, NM >= 1 modes");
+  Mat3 J = Mat3::Identity();                                  //!< [kg m²] total inertia incl. panels
+  std::array<Mat<3, NM>, P> F_s{};                            //!< [kg^½ m] rotation/mode coupling F_sl
+  std::array<Vec<NM>, P> Omega{};                             //!< [rad/s] natural frequencies (diag Ω_l)
+  std::array<Vec<NM>, P> xi{};                                //!< [-] modal damping ratios (diag ξ_l)
+};
+
+//! ϑ̈ = A + B u + D̄ in closed form at one (ϑ, ω) (spec §B.2), shared by plant tests and
+//! controllers. F, G, ϑ̇ = F ω are returned too so a controller computes them once.
+struct EulerAffine {
+  Mat3 F = Mat3::Identity();      //!< [-] ϑ̇ = F ω
+  Mat3 G = Mat3::Identity();      //!< [-] ω = G ϑ̇
+  Vec3 angles_dot = Vec3::Zero(); //!< [rad/s] ϑ̇
+  Vec3 A = Vec3::Zero();          //!< [rad/s²] drift −F Ġ ϑ̇ − F J⁻¹ (ω × J ω)
+  Mat3 B = Mat3::Identity();      //!< [rad/(s² N m)] F J⁻¹
+  Mat3 B_inv = Mat3::Identity();  //!< [N m s²/rad] J G
+};
+
+//! Fills `out` for x-y-z Euler angles ϑ [rad] and body rate ω [rad/s] (J⁻¹ precomputed by the
+//! caller). Returns singular at gimbal lock (|cos θ| < kEulerSingularCos) and non_finite_input for
+//! NaN/Inf, leaving `out` untouched in both cases.   seed 002 eqs. (3)-(4), spec §B.2
+inline Status euler_affine(const Mat3& J, const Mat3& J_inv, const Vec3& angles, const Vec3& omega,
+                           EulerAffine& out) noexcept {
+  if (!all_finite(angles) || !all_finite(omega)) return Status::non_finite_input;
+  Mat3 F;
+  const Status s = euler123_F(angles, F);
+  if (s != Status::ok) return s;
+  out.F = F;
+  out.G = euler123_G(angles);
+  out.angles_dot = F * omega;
+  const Mat3 FJinv = F * J_inv;
+  out.A = -F * (euler123_G_dot(angles, out.angles_dot) * out.angles_dot) - FJinv * omega.cross(J * omega);
+  out.B = FJinv;
+  out.B_inv = J * out.G;
+  return Status::ok;
+}
+
+//! Euler–Lagrange inertia J* = Gᵀ J G and Coriolis matrix C = Gᵀ J Ġ − Gᵀ (J G ϑ̇)× G
+//! (seed 002 eq. (4), repaired B.4 #3). Not used by the controllers (euler_affine is cheaper);
+//! kept for the B-S2/B-S3 checks and for users who want the EL form.
+inline void euler_lagrange_terms(const Mat3& J, const Vec3& angles, const Vec3& angles_dot,
+                                 Mat3& J_star, Mat3& C) noexcept {
+  const Mat3 G = euler123_G(angles);
+  const Mat3 G_dot = euler123_G_dot(angles, angles_dot);
+  J_star = G.transpose() * J * G;
+  C = G.transpose() * J * G_dot - G.transpose() * skew(J * G * angles_dot) * G;
+}
+
+//! Truth plant of seed 002 (spec §B.2).
+//!
+//! State  x = [ϑ (3) [rad] x-y-z Euler angles of B relative to N; ω_BN_B (3) [rad/s];
+//!             η_1 .. η_P (NM each) [kg^½ m]; η̇_1 .. η̇_P (NM each) [kg^½ m/s]]  (22 for 2 × 4).
+//! Input  torque_B (3) [N m]: everything applied to the hub, u + d (the scenario adds d(t)).
+template <int P, int NM>
+class FlexibleSpacecraft {
+ public:
+  static constexpr int kPanels = P;
+  static constexpr int kModes = NM;
+  static constexpr int kModalSize = P * NM;
+  static constexpr int kStateSize = 6 + 2 * kModalSize;
+  static constexpr int kInputSize = 3;
+  using State = Vec<kStateSize>;
+  using Input = Vec3;
+  using Params = FlexibleSpacecraftParams<P, NM>;
+
+  //! Validates J (symmetric, SPD), M_eff SPD, Ω > 0, ξ >= 0; status() says the outcome.
+  explicit FlexibleSpacecraft(const Params& p) noexcept : p_(p) {
+    M_eff_ = p_.J;
+    bool ok = all_finite(p_.J) && (p_.J - p_.J.transpose()).norm() <= 1e-12 * p_.J.norm();
+    for (int l = 0; l < P; ++l) {
+      ok = ok && all_finite(p_.F_s[l]) && all_finite(p_.Omega[l]) && all_finite(p_.xi[l]) &&
+           (p_.Omega[l].array() > 0.0).all() && (p_.xi[l].array() >= 0.0).all();
+      M_eff_ -= p_.F_s[l] * p_.F_s[l].transpose();
+    }
+    const Eigen::LLT<Mat3> llt_J(p_.J), llt_M(M_eff_);
+    ok = ok && llt_J.info() == Eigen::Success && llt_M.info() == Eigen::Success;
+    status_ = ADCS_CHECK(ok, "FlexibleSpacecraft: J and M_eff = J - sum F F^T must be SPD, "
+                             "Omega > 0, xi >= 0, all finite")
+                  ? Status::ok
+                  : Status::invalid_parameter;
+    J_inv_ = llt_J.solve(Mat3::Identity());
+    M_eff_inv_ = llt_M.solve(Mat3::Identity());
+  }
+
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+  const Mat3& M_eff() const noexcept { return M_eff_; }
+  const Mat3& J_inv() const noexcept { return J_inv_; }
+
+  static Vec3 angles(const State& x) noexcept { return x.template head<3>(); }
+  static Vec3 omega_BN_B(const State& x) noexcept { return x.template segment<3>(3); }
+  static Vec<NM> eta(const State& x, int l) noexcept { return x.template segment<NM>(6 + l * NM); }
+  static Vec<NM> eta_dot(const State& x, int l) noexcept {
+    return x.template segment<NM>(6 + kModalSize + l * NM);
+  }
+
+  //! x_dot = f(x, torque_B) by the explicit form above. At gimbal lock (|θ| → 90°) ϑ̇ is not
+  //! defined: the derivative is NaN there and the integrator reports it (spec §B.2: |θ| < 89°).
+  void derivative(double /*t*/, const State& x, const Input& torque_B, State& xdot) const noexcept {
+    const Vec3 w = omega_BN_B(x);
+    Vec3 rhs = torque_B - w.cross(p_.J * w);
+    for (int l = 0; l < P; ++l) {
+      const Vec<NM> e = eta(x, l), ed = eta_dot(x, l);
+      rhs += -w.cross(p_.F_s[l] * ed) +
+             p_.F_s[l] * (2.0 * p_.xi[l].cwiseProduct(p_.Omega[l]).cwiseProduct(ed) +
+                          p_.Omega[l].cwiseAbs2().cwiseProduct(e));
+    }
+    const Vec3 w_dot = M_eff_inv_ * rhs;
+    Mat3 F;
+    if (euler123_F(angles(x), F) != Status::ok) F.setConstant(std::numeric_limits<double>::quiet_NaN());
+    xdot.template head<3>() = F * w;
+    xdot.template segment<3>(3) = w_dot;
+    for (int l = 0; l < P; ++l) {
+      const Vec<NM> e = eta(x, l), ed = eta_dot(x, l);
+      xdot.template segment<NM>(6 + l * NM) = ed;
+      xdot.template segment<NM>(6 + kModalSize + l * NM) =
+          -2.0 * p_.xi[l].cwiseProduct(p_.Omega[l]).cwiseProduct(ed) -
+          p_.Omega[l].cwiseAbs2().cwiseProduct(e) - p_.F_s[l].transpose() * w_dot;  // eq. (2)
+    }
+  }
+
+  //! Lumped disturbance D̄ = F J⁻¹ [d − Σ_l (F_sl η̈_l + ω × F_sl η̇_l)] [rad/s²] at x, given the
+  //! external torque d and the state derivative xdot = f(x, u + d) (for η̈). The truth the RBF
+  //! network approximates (spec §B.2; oracle check B-S9). NaN at gimbal lock.
+  Vec3 lumped_disturbance(const State& x, const Vec3& d, const State& xdot) const noexcept {
+    const Vec3 w = omega_BN_B(x);
+    Vec3 inner = d;
+    for (int l = 0; l < P; ++l)
+      inner -= p_.F_s[l] * xdot.template segment<NM>(6 + kModalSize + l * NM) +
+               w.cross(p_.F_s[l] * eta_dot(x, l));
+    Mat3 F;
+    if (euler123_F(angles(x), F) != Status::ok) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    return F * (J_inv_ * inner);
+  }
+
+  //! Total energy ½ωᵀJω + Σ_l [ωᵀF_sl η̇_l + ½η̇_lᵀη̇_l + ½η_lᵀΩ_l²η_l] [J] (spec B-S5).
+  double energy(const State& x) const noexcept {
+    const Vec3 w = omega_BN_B(x);
+    double E = 0.5 * w.dot(p_.J * w);
+    for (int l = 0; l < P; ++l) {
+      const Vec<NM> e = eta(x, l), ed = eta_dot(x, l);
+      E += w.dot(p_.F_s[l] * ed) + 0.5 * ed.squaredNorm() +
+           0.5 * e.dot(p_.Omega[l].cwiseAbs2().cwiseProduct(e));
+    }
+    return E;
+  }
+
+  //! Hub angular momentum H_b = Jω + Σ_l F_sl η̇_l [N m s], B components (spec B-S5).
+  Vec3 momentum_B(const State& x) const noexcept {
+    Vec3 H = p_.J * omega_BN_B(x);
+    for (int l = 0; l < P; ++l) H += p_.F_s[l] * eta_dot(x, l);
+    return H;
+  }
+
+  //! State at rest modes: ϑ(0) [rad], ϑ̇(0) [rad/s] (ω(0) = G(ϑ(0)) ϑ̇(0), B.4 #16), η = η̇ = 0.
+  static State initial_state(const Vec3& angles0, const Vec3& angles_dot0) noexcept {
+    State x = State::Zero();
+    x.template head<3>() = angles0;
+    x.template segment<3>(3) = euler123_G(angles0) * angles_dot0;
+    return x;
+  }
+
+ private:
+  Params p_;
+  Mat3 M_eff_ = Mat3::Identity();
+  Mat3 M_eff_inv_ = Mat3::Identity();
+  Mat3 J_inv_ = Mat3::Identity();
+  Status status_ = Status::ok;
+};
+
+}  // namespace adcs
