@@ -214,6 +214,11 @@ int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
     w.key("y").value(p.y);
     w.key("ylabel").value(p.ylabel);
     w.key("logy").value(p.logy);
+    if (!p.fill.empty()) {
+      w.key("fill").begin_array();
+      for (const auto& [lo, hi] : p.fill) w.value(std::vector<std::string>{lo, hi});
+      w.end_array();
+    }
     w.end_object();
   }
   w.end_array();

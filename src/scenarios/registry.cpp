@@ -14,6 +14,10 @@ std::unique_ptr<Scenario> make_hybrid_nonadaptive();
 std::unique_ptr<Scenario> make_hybrid_adaptive_bias();
 std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias();
 std::unique_ptr<Scenario> make_hybrid_adaptive_10hz();
+std::unique_ptr<Scenario> make_flexible_ppc();
+std::unique_ptr<Scenario> make_flexible_atc();
+std::unique_ptr<Scenario> make_flexible_ppc_halfgain();
+std::unique_ptr<Scenario> make_flexible_atc_halfgain();
 
 namespace {
 
@@ -26,6 +30,10 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_hybrid_adaptive_bias());
   v.push_back(make_hybrid_nonadaptive_bias());
   v.push_back(make_hybrid_adaptive_10hz());
+  v.push_back(make_flexible_ppc());
+  v.push_back(make_flexible_atc());
+  v.push_back(make_flexible_ppc_halfgain());
+  v.push_back(make_flexible_atc_halfgain());
   return v;
 }
 

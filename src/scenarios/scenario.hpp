@@ -36,6 +36,8 @@ struct PlotSpec {
   std::vector<std::string> y;
   std::string ylabel;
   bool logy = false;
+  //! Shaded bands between two columns (lo, hi), e.g. prescribed-performance funnels.
+  std::vector<std::pair<std::string, std::string>> fill = {};
 };
 
 struct RunContext {

@@ -132,6 +132,48 @@ INSTANTIATE_TEST_SUITE_P(NoMalloc, NoMallocHybrid,
                          ::testing::Values(adcs::AdaptationStep::explicit_euler,
                                            adcs::AdaptationStep::normalized));
 
+// Seed 002 laws: PPATC (funnel transform, RBF, adaptation) and ATC, including a rejected step.
+template <class Law>
+void euler_tracking_no_alloc(Law& law) {
+  const adcs::SinusoidalEulerReference ref;
+  adcs::EulerTrackingMeasurement m;
+  m.angles = ref.sample(0.0).angles + adcs::Vec3(0.25, 0.15, -0.2) * (3.14159265358979 / 180.0);
+  typename Law::Command cmd;
+  typename Law::Diagnostics diag;
+  long allocs = 0;
+  int not_ok = 0;
+  adcs::Status rejected = adcs::Status::ok;
+  {
+    NoAllocScope scope;
+    for (int k = 0; k < 100; ++k) {
+      m.t = 1e-4 * k;
+      not_ok += law.step(m, ref.sample(m.t), cmd, &diag) != adcs::Status::ok;
+    }
+    m.omega_BN_B(1) = std::numeric_limits<double>::quiet_NaN();
+    rejected = law.step(m, ref.sample(0.5), cmd);
+    allocs = scope.allocations();
+  }
+  EXPECT_EQ(allocs, 0);
+  EXPECT_EQ(not_ok, 0);
+  EXPECT_EQ(rejected, adcs::Status::non_finite_input);
+}
+
+TEST(NoMalloc, PpcNeuralStep) {
+  adcs::PpcNeuralParams p;
+  p.gains.J = adcs::flexible_params_seed002().J;
+  adcs::PpcNeural law(p);
+  ASSERT_EQ(law.status(), adcs::Status::ok);
+  euler_tracking_no_alloc(law);
+}
+
+TEST(NoMalloc, AdaptiveTrackingStep) {
+  adcs::AdaptiveTrackingParams p;
+  p.gains.J = adcs::flexible_params_seed002().J;
+  adcs::AdaptiveTracking law(p);
+  ASSERT_EQ(law.status(), adcs::Status::ok);
+  euler_tracking_no_alloc(law);
+}
+
 TEST(NoMalloc, PlantDerivativeAndMathKernels) {
   adcs::RigidBodyRwParams<4> pp;
   pp.J_B = adcs::Vec3(900, 800, 600).asDiagonal();

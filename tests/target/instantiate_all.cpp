@@ -11,6 +11,12 @@ template struct VscmgGeometry<4, 3>;
 template class RwTorqueAllocator<4>;
 template class MrpPd<4>;
 template class HybridAdaptive<4, 3>;
+template class FlexibleSpacecraft<2, 4>;
+template class PrescribedPerformance<3>;
+template class RbfLayer<6, 7>;
+template class RbfCompensator<6, 7, 3>;
+template Mat<7, 3> rbf_weight_step<7, 3>(const Mat<7, 3>&, const Vec<7>&, const Vec<3>&, const Vec<3>&, double,
+                                         double) noexcept;
 template class MrpPd<3>;
 template Status right_pinv_solve<3, 7>(const Mat<3, 7>&, const Vec<3>&, Vec<7>&, PinvInfo*) noexcept;
 template Status right_pinv<3, 4>(const Mat<3, 4>&, Mat<4, 3>&, PinvInfo*) noexcept;
@@ -45,7 +51,18 @@ extern "C" int adcs_target_smoke(const double* in, double* out) {
   const adcs::Status s2 = adcs::euler321_F(adcs::dcm_to_euler321(C), F321);
   const adcs::SinusoidalRateReference ref;
   const adcs::MrpReferenceSample r = ref.sample(in[3], sigma);
+  adcs::PpcNeuralParams pp;
+  pp.gains.J = adcs::flexible_params_seed002().J;
+  adcs::PpcNeural ppc(pp);
+  adcs::AdaptiveTracking atc(adcs::AdaptiveTrackingParams{pp.gains});
+  adcs::EulerTrackingMeasurement m;
+  m.angles = sigma * 1e-3;
+  const adcs::SinusoidalEulerReference eref;
+  adcs::EulerTrackingCommand cmd;
+  const adcs::Status s3 = ppc.step(m, eref.sample(in[3]), cmd);
+  const adcs::Status s4 = atc.step(m, eref.sample(in[3]), cmd);
+  out[1] = cmd.torque_B.sum();
   out[0] = Gd.sum() + F.sum() + F321.sum() + r.sigma_ddot.sum() + adcs::so3_exp(sigma).sum() +
            adcs::normalized_step_scale(in[4], 0.2);
-  return static_cast<int>(s) + static_cast<int>(s2);
+  return static_cast<int>(s) + static_cast<int>(s2) + static_cast<int>(s3) + static_cast<int>(s4);
 }

@@ -6,20 +6,23 @@
 // μ̂ ≥ 0 is invariant (spec B-S12): both terms are non-negative whenever μ̂ ≥ 0.
 #include <cmath>
 
+#include <Eigen/Core>
+
 namespace adcs {
 
 inline double bound_estimate_step(double mu, double s_norm, double tau_mu, double gamma,
                                   double T) noexcept {
   if (gamma > 0.0) {
-    const double decay = std::exp(-tau_mu * gamma * T);
-    return decay * mu + (1.0 - decay) / gamma * s_norm;
+    const double x = tau_mu * gamma * T;
+    return std::exp(-x) * mu + (-std::expm1(-x) / gamma) * s_norm;  // expm1: no cancellation
   }
   return mu + tau_mu * T * s_norm;
 }
 
 //! The robust term μ̂² s/(μ̂‖s‖ + σ) of seed 002 eq. (12); its denominator is ≥ σ > 0 for μ̂ ≥ 0.
-template <class Vector>
-Vector bound_robust_term(double mu, const Vector& s, double sigma) noexcept {
+template <class Derived>
+typename Derived::PlainObject bound_robust_term(double mu, const Eigen::MatrixBase<Derived>& s,
+                                                double sigma) noexcept {
   return (mu * mu / (mu * s.norm() + sigma)) * s;
 }
 

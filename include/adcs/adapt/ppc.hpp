@@ -72,9 +72,14 @@ inline Status ppc_S_inverse(double z, PpcBranch b, double delta, PpcInverse& out
   // a = distance to the lower edge, c = distance to the upper edge (both > 0 here).
   const double a = b == PpcBranch::positive ? z + delta : z + 1.0;
   const double c = b == PpcBranch::positive ? 1.0 - z : delta - z;
-  out.eps = 0.5 * std::log(a / c);
-  out.eps_z = 0.5 * (1.0 / a + 1.0 / c);
-  out.eps_zz = 0.5 * (1.0 / (c * c) - 1.0 / (a * a));
+  const double eps = 0.5 * std::log(a / c);
+  const double eps_z = 0.5 * (1.0 / a + 1.0 / c);
+  const double eps_zz = 0.5 * (1.0 / (c * c) - 1.0 / (a * a));
+  // Within ~1e-154 of an edge the squares overflow: that is the edge, numerically.
+  if (!std::isfinite(eps) || !std::isfinite(eps_z) || !std::isfinite(eps_zz)) return Status::out_of_range;
+  out.eps = eps;
+  out.eps_z = eps_z;
+  out.eps_zz = eps_zz;
   return Status::ok;
 }
 
@@ -167,6 +172,9 @@ class PrescribedPerformance {
       s.eps_dot(i) = s.r(i) * s.q(i);
       s.q_dot_offset(i) = -(e_dot(i) * rd * rho + e(i) * rdd * rho - e(i) * rd * rd) / (rho * rho);  // eq. (11)
     }
+    // Absurd errors (|e| ~ 1e300) can still overflow the products above: refuse, never emit Inf.
+    if (!all_finite(s.eps_dot) || !all_finite(s.r_dot) || !all_finite(s.q_dot_offset) || !all_finite(s.q))
+      return Status::out_of_range;
     out = s;
     return clamped ? Status::constraint_violated : Status::ok;
   }

@@ -7,7 +7,7 @@
 //   Ŵ̇_i = τ_i (s_i h − β Ŵ_i)                   (column i, output i)         eq. (13)
 //
 // The weight law is integrated over one control period T with s and h held (ZOH), exactly:
-//   Ŵ_i⁺ = e^{−τ_i β T} Ŵ_i + (1 − e^{−τ_i β T})/β · s_i h     (β > 0)
+//   Ŵ_i⁺ = e^{−τ_i β T} Ŵ_i + (1 − e^{−τ_i β T})/β · s_i h     (β > 0, via expm1)
 // which is the explicit-Euler step to O(T²), never overshoots the leakage, and is what the
 // continuous law gives under the hold. β = 0 falls back to Ŵ_i⁺ = Ŵ_i + τ_i T s_i h.
 #include <cmath>
@@ -56,8 +56,8 @@ Mat<NH, NO> rbf_weight_step(const Mat<NH, NO>& W, const Vec<NH>& h, const Vec<NO
   Mat<NH, NO> next;
   for (int i = 0; i < NO; ++i) {
     if (beta > 0.0) {
-      const double decay = std::exp(-tau(i) * beta * T);
-      next.col(i) = decay * W.col(i) + ((1.0 - decay) / beta * s(i)) * h;
+      const double x = tau(i) * beta * T;
+      next.col(i) = std::exp(-x) * W.col(i) + (-std::expm1(-x) / beta * s(i)) * h;  // expm1: no cancellation
     } else {
       next.col(i) = W.col(i) + (tau(i) * T * s(i)) * h;
     }

@@ -1,0 +1,91 @@
+#pragma once
+// Neural compensation of a lumped disturbance with an adaptive robust term — the part seed 002's
+// PPATC (eq. (12)) and its ATC comparison law share (spec §B.3 steps 11-14):
+//
+//   h = h(x),  D̂ = Ŵᵀ h                                   RBF estimate        (steps 11-12)
+//   robust = μ̂² s/(μ̂ ‖s‖ + σ)                             bound compensation  (eq. (12))
+//   Ŵ̇_i = τ_wi (s_i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s‖ − γ μ̂)     adaptation          (eqs. (13)-(14))
+//
+// The estimates are integrated over each control period with s and h held (exact ZOH steps of
+// rbf_network.hpp / bound_estimator.hpp). μ̂ ≥ 0 is an invariant (set_state refuses μ̂ < 0).
+#include "adcs/adapt/bound_estimator.hpp"
+#include "adcs/adapt/rbf_network.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+template <int NI, int NH, int NO>
+struct RbfCompensatorParams {
+  RbfLayerParams<NI, NH> layer{};      //!< centres c_j and widths b_j (units of x)
+  Vec<NO> tau_w = Vec<NO>::Constant(0.5);  //!< [-] τ_wi, seed 002 Table 2
+  double tau_mu = 0.5;                 //!< [-] τ_μ, seed 002 Table 2
+  double beta = 0.01;                  //!< [-] weight leakage β, seed 002 Table 2
+  double gamma = 0.01;                 //!< [-] bound leakage γ, seed 002 Table 2
+  double sigma = 0.01;                 //!< [-] robust-term constant σ > 0, seed 002 Table 2
+};
+
+template <int NI, int NH, int NO>
+class RbfCompensator {
+ public:
+  using Params = RbfCompensatorParams<NI, NH, NO>;
+  struct Output {
+    Vec<NH> h = Vec<NH>::Zero();        //!< RBF activations
+    Vec<NO> D_hat = Vec<NO>::Zero();    //!< Ŵᵀ h
+    Vec<NO> robust = Vec<NO>::Zero();   //!< μ̂² s/(μ̂‖s‖ + σ)
+  };
+
+  explicit RbfCompensator(const Params& p) noexcept : p_(p), layer_(p.layer) {
+    const bool ok = layer_.status() == Status::ok && all_finite(p_.tau_w) && (p_.tau_w.array() >= 0.0).all() &&
+                    std::isfinite(p_.tau_mu) && p_.tau_mu >= 0.0 && std::isfinite(p_.beta) && p_.beta >= 0.0 &&
+                    std::isfinite(p_.gamma) && p_.gamma >= 0.0 && std::isfinite(p_.sigma) && p_.sigma > 0.0;
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+  }
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+
+  //! Ŵ(0) = 0, μ̂(0) = 0 (spec §B.5 assumption).
+  void reset() noexcept {
+    W_.setZero();
+    mu_ = 0.0;
+  }
+
+  //! D̂ and the robust term for NN input x and sliding variable s (both finite: caller checks).
+  Output evaluate(const Vec<NI>& x, const Vec<NO>& s) const noexcept {
+    Output o;
+    o.h = layer_.activations(x);
+    o.D_hat = W_.transpose() * o.h;
+    o.robust = bound_robust_term(mu_, s, p_.sigma);
+    return o;
+  }
+
+  //! Next estimates after one period T with s and h held; committed by commit().
+  void propose(const Output& o, const Vec<NO>& s, double T, Mat<NH, NO>& W_next, double& mu_next) const noexcept {
+    W_next = rbf_weight_step<NH, NO>(W_, o.h, s, p_.tau_w, p_.beta, T);   // eq. (13)
+    mu_next = bound_estimate_step(mu_, s.norm(), p_.tau_mu, p_.gamma, T);  // eq. (14)
+  }
+  void commit(const Mat<NH, NO>& W_next, double mu_next) noexcept {
+    W_ = W_next;
+    mu_ = mu_next;
+  }
+
+  //! Warm start / oracle tests. Rejects non-finite values and μ̂ < 0 (state untouched).
+  [[nodiscard]] Status set_state(const Mat<NH, NO>& W, double mu) noexcept {
+    if (!all_finite(W) || !std::isfinite(mu)) return Status::non_finite_input;
+    if (mu < 0.0) return Status::out_of_range;
+    W_ = W;
+    mu_ = mu;
+    return Status::ok;
+  }
+  const Mat<NH, NO>& weights() const noexcept { return W_; }
+  double mu() const noexcept { return mu_; }
+
+ private:
+  Params p_;
+  RbfLayer<NI, NH> layer_;
+  Mat<NH, NO> W_ = Mat<NH, NO>::Zero();
+  double mu_ = 0.0;
+  Status status_ = Status::ok;
+};
+
+}  // namespace adcs

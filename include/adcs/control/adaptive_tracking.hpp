@@ -1,0 +1,71 @@
+#pragma once
+// ATC: the adaptive RBF tracking law seed 002 compares PPATC with (spec §B.3, repaired B.4 #21):
+// the same gains, NN input, centres and adaptive laws, but no error transformation:
+//
+//   s_e = λ e + ė
+//   u = B⁻¹ ( −A + ϑ̈_d − λ ė − D̂ − μ̂² s_e/(μ̂‖s_e‖ + σ) − K s_e ),  B⁻¹ = J G
+//   Ŵ̇_i = τ_wi (s_e,i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s_e‖ − γ μ̂)
+//
+// giving ṡ_e = D̄ − D̂ − μ̂² s_e/(μ̂‖s_e‖ + σ) − K s_e. Discrete-time at control_period_s like PPATC.
+#include "adcs/control/euler_tracking_common.hpp"
+
+namespace adcs {
+
+struct AdaptiveTrackingParams {
+  EulerTrackingGains gains{};  //!< J, λ, K, RBF compensator, units, period (seed 002 Table 2)
+};
+
+struct AdaptiveTrackingDiagnostics {
+  Vec3 s = Vec3::Zero();       //!< [law units/s] s_e = λe + ė
+  Vec3 D_hat = Vec3::Zero();   //!< [law units/s²] Ŵᵀh
+  Vec3 robust = Vec3::Zero();  //!< [law units/s²] μ̂²s/(μ̂‖s‖ + σ)
+  Vec3 e = Vec3::Zero();       //!< [rad] ϑ − ϑ_d
+};
+
+class AdaptiveTracking {
+ public:
+  using Params = AdaptiveTrackingParams;
+  using Measurement = EulerTrackingMeasurement;
+  using Reference = EulerReferenceSample;
+  using Command = EulerTrackingCommand;
+  using Diagnostics = AdaptiveTrackingDiagnostics;
+
+  explicit AdaptiveTracking(const Params& p) noexcept : p_(p), core_(p.gains) { reset(); }
+  Status status() const noexcept { return core_.status(); }
+  const Params& params() const noexcept { return p_; }
+  void reset() noexcept { core_.reset(); }
+
+  //! One control sample. ok; non_finite_input; singular (gimbal lock); out_of_range (a
+  //! non-finite result). Except for ok, `out` is the last good command, estimates untouched.
+  [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
+                            Diagnostics* diag = nullptr) noexcept {
+    out = core_.last();
+    if (core_.status() != Status::ok) return core_.status();
+    EulerTrackingCore::Kinematics k;
+    const Status ks = core_.kinematics(m, r, k);
+    if (ks != Status::ok) return ks;
+    const double c = core_.angle_scale();
+    const Vec3& lambda = p_.gains.lambda;
+    const Vec3 s = c * (lambda.cwiseProduct(k.e) + k.e_dot);
+    const Vec3 law = c * (-k.affine.A + r.angles_ddot - lambda.cwiseProduct(k.e_dot));
+    EulerTrackingCore::Compensation comp;
+    const Status cs = core_.compensate_and_adapt(k, s, law, out, comp);
+    if (diag) {
+      diag->s = s;
+      diag->D_hat = comp.D_hat;
+      diag->robust = comp.robust;
+      diag->e = k.e;
+    }
+    return cs;
+  }
+
+  const Mat<7, 3>& weights() const noexcept { return core_.compensator().weights(); }
+  double mu() const noexcept { return core_.compensator().mu(); }
+  RbfCompensator<6, 7, 3>& compensator() noexcept { return core_.compensator(); }
+
+ private:
+  Params p_;
+  EulerTrackingCore core_;
+};
+
+}  // namespace adcs

@@ -1,0 +1,127 @@
+#pragma once
+// Prescribed-performance adaptive RBF attitude tracking (PPATC) for a flexible spacecraft,
+// seed 002 eq. (12), spec §B.3 steps 1-15, in x-y-z Euler angles:
+//
+//   e = ϑ − ϑ_d,  ε = S⁻¹(e/ρ) (adapt/ppc.hpp),  s = λ ε + ε̇                    eq. (10)
+//   u = B⁻¹ ( −A − R⁻¹V − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s ),  B⁻¹ = J G             eq. (12)
+//   (R⁻¹V)_i = (λ_i + ṙ_i/r_i) q_i − (ė_i ρ̇_i ρ_i + e_i ρ̈_i ρ_i − e_i ρ̇_i²)/ρ_i² − ϑ̈_d,i   eq. (11)
+//   Ŵ̇_i = τ_wi (s_i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s‖ − γ μ̂),  h = h((180/π)[e; ė])      eqs. (13)-(14)
+//
+// giving ṡ = R (D̄ − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s). The paper's law is continuous; here it is a
+// discrete-time object at control_period_s with the estimates stepped inside step() (exact ZOH
+// steps). The s-loop rate R K reaches ~1.1e4 s⁻¹ as ρ → ρ∞ (spec §B.3 step 15), so the period
+// must be ~1e-4 s in the paper's unit convention; the scenario's sample-rate study measures it.
+//
+// Unit convention (spec B.4 #18): U_rad (default) — every controller quantity in SI radians, the
+// RBF input in degrees; U_deg — the law's angle-valued quantities in degrees (the option the
+// spec keeps for comparison). Only the numeric weight of −K s, D̂ and μ̂ changes between them.
+#include "adcs/adapt/ppc.hpp"
+#include "adcs/adapt/rbf_compensator.hpp"
+#include "adcs/control/euler_tracking_common.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/plant/flexible_spacecraft.hpp"
+
+namespace adcs {
+
+struct PpcNeuralParams {
+  EulerTrackingGains gains{};                 //!< J, λ, K, RBF compensator, units, period
+  PpcParams<3> ppc = seed002_performance();   //!< ρ0, ρ∞, k, δ per axis [rad], seed 002 Table 2
+};
+
+//! Optional per-step diagnostics (caller-owned).
+struct PpcNeuralDiagnostics {
+  PpcSample<3> ppc{};             //!< ρ, z, ε, r, ... (law units)
+  Vec3 s = Vec3::Zero();          //!< [-/s] sliding variable λε + ε̇
+  Vec3 D_hat = Vec3::Zero();      //!< [law units/s²] Ŵᵀh
+  Vec3 robust = Vec3::Zero();     //!< [law units/s²] μ̂²s/(μ̂‖s‖ + σ)
+  Vec3 e = Vec3::Zero();          //!< [rad] ϑ − ϑ_d
+  double funnel_margin = 0.0;     //!< [-] min distance of z to its interval edge (> 0 inside)
+};
+
+class PpcNeural {
+ public:
+  using Params = PpcNeuralParams;
+  using Measurement = EulerTrackingMeasurement;
+  using Reference = EulerReferenceSample;
+  using Command = EulerTrackingCommand;
+  using Diagnostics = PpcNeuralDiagnostics;
+
+  explicit PpcNeural(const Params& p) noexcept
+      : p_(p), core_(p.gains), ppc_(scaled(p.ppc, core_.angle_scale())) {
+    status_ = core_.status() == Status::ok && ppc_.status() == Status::ok ? Status::ok : Status::invalid_parameter;
+    reset();
+  }
+
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+
+  //! Estimates to Ŵ = 0, μ̂ = 0; the funnel branches are fixed again by the next step's e.
+  void reset() noexcept {
+    core_.reset();
+    started_ = false;
+  }
+
+  //! One control sample at m.t [s] since the start of the manoeuvre (ρ(t) is measured from it).
+  //! ok; constraint_violated (robust mode: an error at its funnel edge was clamped, flagged);
+  //! out_of_range (funnel violated, or e(0) outside the funnel at the first step — the law is
+  //! undefined there); non_finite_input; singular (|θ| at gimbal lock). Except for ok and
+  //! constraint_violated, `out` is the last good command and the estimates are untouched.
+  [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
+                            Diagnostics* diag = nullptr) noexcept {
+    out = core_.last();
+    if (status_ != Status::ok) return status_;
+    EulerTrackingCore::Kinematics k;
+    const Status ks = core_.kinematics(m, r, k);
+    if (ks != Status::ok) return ks;
+    const double c = core_.angle_scale();
+    const Vec3 e = c * k.e, e_dot = c * k.e_dot;  // law units
+    if (!started_) {
+      const Status init = ppc_.init(e);
+      if (init != Status::ok) return init;
+      started_ = true;
+    }
+    PpcSample<3> ps;
+    const Status ts = ppc_.transform(m.t, e, e_dot, ps);                            // steps 2-7
+    if (!usable(ts)) return ts;
+    const Vec3& lambda = p_.gains.lambda;
+    const Vec3 s = lambda.cwiseProduct(ps.eps) + ps.eps_dot;                        // eq. (10)
+    const Vec3 RinvV = (lambda + ps.r_dot.cwiseQuotient(ps.r)).cwiseProduct(ps.q) + ps.q_dot_offset -
+                       c * r.angles_ddot;                                            // eq. (11)
+    const Vec3 law = -c * k.affine.A - RinvV;                                        // eq. (12), model part
+    EulerTrackingCore::Compensation comp;
+    const Status cs = core_.compensate_and_adapt(k, s, law, out, comp);             // steps 11-14
+    if (diag) {
+      diag->ppc = ps;
+      diag->s = s;
+      diag->D_hat = comp.D_hat;
+      diag->robust = comp.robust;
+      diag->e = k.e;
+      diag->funnel_margin = ps.margin_min;
+    }
+    if (cs != Status::ok) return cs;
+    return ts;
+  }
+
+  const Mat<7, 3>& weights() const noexcept { return core_.compensator().weights(); }
+  double mu() const noexcept { return core_.compensator().mu(); }
+  RbfCompensator<6, 7, 3>& compensator() noexcept { return core_.compensator(); }
+  PpcBranch branch(int i) const noexcept { return ppc_.branch(i); }
+
+ private:
+  static PpcParams<3> scaled(PpcParams<3> p, double c) noexcept {
+    for (auto& f : p.rho) {
+      f.rho0 *= c;
+      f.rho_inf *= c;
+    }
+    return p;
+  }
+
+  Params p_;
+  EulerTrackingCore core_;
+  PrescribedPerformance<3> ppc_;
+  bool started_ = false;
+  Status status_ = Status::ok;
+};
+
+}  // namespace adcs

@@ -1,0 +1,418 @@
+// Seed 002 scenarios (spec §B.5): flexible spacecraft (2 panels x 4 modes) tracking a sinusoidal
+// Euler-angle reference under a periodic disturbance torque.
+//   flexible-ppc / flexible-atc                    PPATC (eq. (12)) / the ATC comparison law
+//   flexible-ppc-halfgain / flexible-atc-halfgain  the same with K, τ_w, τ_μ halved (B.4 #24);
+//                                                  they also run the nominal gains for Figs. 9-11
+// Truth plant plant/flexible_spacecraft.hpp (22 states) by RK4; the controller is a discrete
+// object at control_period_s (default 1e-4 s, spec §B.5) with zero-order hold.
+// Every parameter the paper does not give is declared with "assumed (spec B.5)".
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "adcs/control/adaptive_tracking.hpp"
+#include "adcs/control/ppc_neural.hpp"
+#include "adcs/plant/flexible_configurations.hpp"
+#include "scenarios/scenario.hpp"
+#include "sim/recorder.hpp"
+#include "sim/rk4_integrator.hpp"
+#include "sim/sampled_data.hpp"
+
+namespace adcs::sim {
+namespace {
+
+using Plant = FlexibleSpacecraft<2, 4>;
+constexpr const char* kTable = "seed 002 Table 1/2";
+constexpr const char* kB5 = "assumed (spec B.5)";
+
+//! Truth plant plus the disturbance d(t) of seed 002 §4 (B.4 #22) added to the control torque.
+struct FlexibleSimPlant {
+  static constexpr int kStateSize = Plant::kStateSize;
+  static constexpr int kInputSize = 3;
+  using State = Plant::State;
+  using Input = Vec3;
+  const Plant* plant;
+  double d_amp, n0;
+  Vec3 disturbance(double t) const noexcept {  // d = a [cos n0t + 1, cos n0t + sin n0t, sin n0t + 1]
+    const double c = std::cos(n0 * t), s = std::sin(n0 * t);
+    return d_amp * Vec3(c + 1.0, c + s, s + 1.0);
+  }
+  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
+    plant->derivative(t, x, Vec3(u + disturbance(t)), xdot);
+  }
+};
+
+//! Per-sample errors of the companion (nominal-gain) run, overlaid on the halved-gain plots.
+struct CompanionTrace {
+  std::vector<double> e[3];
+};
+
+class FlexibleScenario final : public Scenario {
+ public:
+  FlexibleScenario(bool ppc, bool halfgain) : ppc_(ppc), half_(halfgain) {}
+
+  std::string name() const override {
+    return std::string("flexible-") + (ppc_ ? "ppc" : "atc") + (half_ ? "-halfgain" : "");
+  }
+  std::string description() const override {
+    return std::string("seed 002: flexible spacecraft (2 panels x 4 modes), ") +
+           (ppc_ ? "prescribed-performance adaptive RBF law PPATC (eq. 12)" : "adaptive RBF law ATC (comparison)") +
+           (half_ ? ", K, tau_w, tau_mu halved" : "") + ", 100 s";
+  }
+
+  void declare(ParamSet& p) const override {
+    const FlexibleSpacecraftParams<2, 4> fp = flexible_params_seed002();
+    const double g = half_ ? 0.5 : 1.0;
+    const std::string gain_src = half_ ? std::string(kTable) + " x 0.5 (spec B.4 #24)" : kTable;
+    p.number("duration_s", 100.0, "s", kB5);
+    p.number("control_period_s", 1e-4, "s",
+             std::string(kB5) + ": the paper's law is continuous; 1e-4 s in U_rad (stiff near rho_inf)");
+    p.number("plant_step_max_s", 1e-3, "s", "ours: largest RK4 step of the truth plant (<= control period used)");
+    std::vector<std::vector<double>> J(3, std::vector<double>(3)), F(3, std::vector<double>(4));
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) J[i][j] = fp.J(i, j);
+      for (int j = 0; j < 4; ++j) F[i][j] = fp.F_s[0](i, j);
+    }
+    p.matrix("J_kgm2", J, "kg m^2", kTable);
+    p.matrix("F_s1", F, "kg^0.5 m", std::string(kTable) + "; F_s2 = -F_s1 (spec B.4 #17)");
+    p.vector("Omega_Hz", {0.379, 1.042, 1.331, 2.226}, "Hz", std::string(kTable) + ": both panels (B.4 #17)");
+    p.vector("xi", {0.005, 0.005, 0.005, 0.005}, "-", kTable);
+    p.vector("theta0_deg", {0.25, 0.15, -0.20}, "deg", kTable);
+    p.vector("thetadot0_deg_s", {0.02, 0.01, -0.02}, "deg/s", std::string(kTable) + " (B.4 #16)");
+    p.vector("ref_amplitude_deg", {0.5, 1.0, -0.5}, "deg", "seed 002 §4 (B.4 #23)");
+    p.number("ref_frequency_rad_s", 0.1, "rad/s", "seed 002 §4");
+    p.number("disturbance_Nm", 0.0045, "N m", "seed 002 §4 (B.4 #22)");
+    p.number("n0_rad_s", 0.0011, "rad/s", "seed 002 §4");
+    p.vector("K", {0.5 * g, 0.1 * g, 0.5 * g}, "-", gain_src);
+    p.vector("lambda", {0.125, 0.125, 0.125}, "1/s", kTable);
+    p.vector("tau_w", {0.5 * g, 0.5 * g, 0.5 * g}, "-", gain_src);
+    p.number("tau_mu", 0.5 * g, "-", gain_src);
+    p.number("sigma", 0.01, "-", kTable);
+    p.number("beta", 0.01, "-", kTable);
+    p.number("gamma", 0.01, "-", kTable);
+    p.vector("rho0_deg", {0.3, 0.3, 0.3}, "deg", kTable);
+    p.vector("rho_inf_deg", {0.005, 0.005, 0.005}, "deg", kTable);
+    p.vector("k_rho", {0.15, 0.15, 0.15}, "1/s", kTable);
+    p.vector("delta", {0.0, 0.0, 0.0}, "-", std::string(kTable) + " (admissible: no e_i(0) = 0, B.4 #15)");
+    p.name("units", "U_rad", {"U_rad", "U_deg"}, "spec B.4 #18: U_rad reproduces all claims");
+    p.name("robust_clamp", "off", {"off", "on"},
+           "spec §B.3 step 3: on = clamp z at a funnel edge and continue (flagged)");
+    p.vector("window_s", {40.0, 100.0}, "s", std::string(kB5) + ": steady-state window W_ss");
+    p.number("record_every", 100, "samples", "CSV decimation (in control samples)");
+    if (half_)
+      p.name("companion", "run", {"run", "skip"}, "run: also simulate the nominal gains (P7, Figs. 9-11)");
+  }
+
+  RunResult run(const ParamSet& p, const RunContext& ctx) const override {
+    if (!half_ || p.get_name("companion") == "skip") return simulate(p, ctx, nullptr, nullptr);
+    ParamSet nominal = p;  // the same run with the gains doubled back (B.4 #24)
+    nominal.set("companion", "skip");
+    const Vec3 K = p.get_vec<3>("K"), tw = p.get_vec<3>("tau_w");
+    auto vec = [](const Vec3& v) {
+      return "[" + format_number(v(0)) + "," + format_number(v(1)) + "," + format_number(v(2)) + "]";
+    };
+    nominal.set("K", vec(2.0 * K));
+    nominal.set("tau_w", vec(2.0 * tw));
+    nominal.set("tau_mu", format_number(2.0 * p.get_number("tau_mu")));
+    RunContext quiet = ctx;
+    quiet.csv_path.clear();
+    CompanionTrace trace;
+    const RunResult n = simulate(nominal, quiet, nullptr, &trace);
+    RunResult r = simulate(p, ctx, &trace, nullptr);
+    const double ratio_y = r.metric("err_ss_max_deg_y") / n.metric("err_ss_max_deg_y");
+    r.metrics.push_back({"nominal_err_ss_max_deg_y", n.metric("err_ss_max_deg_y")});
+    r.metrics.push_back({"err_ss_ratio_to_nominal_y", ratio_y});
+    r.metrics.push_back({"nominal_torque_peak_Nm", n.metric("torque_peak_Nm")});
+    char buf[160];
+    if (!ppc_) {
+      std::snprintf(buf, sizeof buf, "pitch %.3g deg = %.2f x nominal (%.3g deg)", r.metric("err_ss_max_deg_y"),
+                    ratio_y, n.metric("err_ss_max_deg_y"));
+      r.claims.push_back({"paper", "P7 halved gains: ATC accuracy drops, oscillation grows (Figs. 9-11)",
+                          "pitch >= 2x nominal and > 0.005 deg (PROTO 2.16e-2 vs 5.61e-3)", buf,
+                          ratio_y >= 2.0 && r.metric("err_ss_max_deg_y") > 0.005});
+    }
+    std::snprintf(buf, sizeof buf, "%.3g N m (nominal gains %.3g N m)", r.metric("torque_peak_Nm"),
+                  n.metric("torque_peak_Nm"));
+    r.claims.push_back({"paper", "P9 halved gains halve the initial torque peak (informative)",
+                        "about 0.5x (PROTO 38.5 N m nominal, U_rad)", buf, std::nullopt});
+    const std::string nm = name();
+    for (int i = 0; i < 3; ++i) {
+      const std::string ax = kAxis[i];
+      r.plots.push_back({nm + "-compare-" + ax + ".png",
+                         std::string("Axis ") + ax + " error: halved vs nominal gains (Figs. 9-11)", "t",
+                         {"e_" + ax + "_deg", "e_" + ax + "_deg_nominal_gains"}, "e [deg]", false,
+                         {{"rho_lo_" + ax + "_deg", "rho_hi_" + ax + "_deg"}}});
+    }
+    return r;
+  }
+
+ private:
+  static constexpr const char* kAxis[3] = {"x", "y", "z"};
+
+  RunResult simulate(const ParamSet& p, const RunContext& ctx, const CompanionTrace* overlay,
+                     CompanionTrace* capture) const {
+    constexpr double d2r = 3.14159265358979323846 / 180.0;
+    // --- plant (spec §B.5) ---
+    FlexibleSpacecraftParams<2, 4> fp;
+    fp.J = p.get_mat<3, 3>("J_kgm2");
+    fp.F_s[0] = p.get_mat<3, 4>("F_s1");
+    fp.F_s[1] = -fp.F_s[0];
+    for (int l = 0; l < 2; ++l) {
+      fp.Omega[l] = 2.0 * 3.14159265358979323846 * p.get_vec<4>("Omega_Hz");
+      fp.xi[l] = p.get_vec<4>("xi");
+    }
+    const Plant plant(fp);
+    if (plant.status() != Status::ok) throw ParamError("plant parameters rejected (J, M_eff SPD, Omega > 0, xi >= 0)");
+    const FlexibleSimPlant sim{&plant, p.get_number("disturbance_Nm"), p.get_number("n0_rad_s")};
+    SinusoidalEulerParams rp;
+    rp.amplitude_rad = d2r * p.get_vec<3>("ref_amplitude_deg");
+    rp.frequency_rad_s = p.get_number("ref_frequency_rad_s");
+    const SinusoidalEulerReference ref(rp);
+
+    // --- controller (spec §B.3, Table 2) ---
+    const double T = p.get_number("control_period_s");
+    EulerTrackingGains g;
+    g.J = fp.J;  // the paper's law uses the true inertia
+    g.lambda = p.get_vec<3>("lambda");
+    g.K = p.get_vec<3>("K");
+    g.compensator = seed002_compensator();
+    g.compensator.tau_w = p.get_vec<3>("tau_w");
+    g.compensator.tau_mu = p.get_number("tau_mu");
+    g.compensator.sigma = p.get_number("sigma");
+    g.compensator.beta = p.get_number("beta");
+    g.compensator.gamma = p.get_number("gamma");
+    g.units = p.get_name("units") == "U_deg" ? AngleUnits::degrees : AngleUnits::radians;
+    g.control_period_s = T;
+    PpcParams<3> pp;
+    const Vec3 rho0 = d2r * p.get_vec<3>("rho0_deg"), rinf = d2r * p.get_vec<3>("rho_inf_deg");
+    const Vec3 k_rho = p.get_vec<3>("k_rho");
+    for (int i = 0; i < 3; ++i) pp.rho[i] = PerformanceFunction{rho0(i), rinf(i), k_rho(i)};
+    pp.delta = p.get_vec<3>("delta");
+    pp.robust_clamp = p.get_name("robust_clamp") == "on";
+    std::optional<PpcNeural> ppc;
+    std::optional<AdaptiveTracking> atc;
+    if (ppc_) {
+      ppc.emplace(PpcNeuralParams{g, pp});
+      if (ppc->status() != Status::ok) throw ParamError("PPATC parameters rejected (gains, rho, delta, period)");
+    } else {
+      atc.emplace(AdaptiveTrackingParams{g});
+      if (atc->status() != Status::ok) throw ParamError("ATC parameters rejected (gains, period)");
+    }
+    // The funnel both laws are judged against (spec §B.6): branches from e(0), δ, ρ(t).
+    const PrescribedPerformance<3> funnel(pp);
+    const Vec3 th0 = d2r * p.get_vec<3>("theta0_deg");
+    PrescribedPerformance<3> funnel_at0 = funnel;
+    const Vec3 e0 = th0 - ref.sample(0.0).angles;
+    if (funnel_at0.init(e0) != Status::ok) throw ParamError("e(0) is outside the funnel: |e_i(0)| must be < rho0");
+
+    Plant::State x = Plant::initial_state(th0, d2r * p.get_vec<3>("thetadot0_deg_s"));
+
+    std::unique_ptr<CsvRecorder> csv;
+    if (!ctx.csv_path.empty()) {
+      std::vector<Column> cols{{"t", "s"}};
+      for (const char* a : kAxis) cols.push_back({std::string("e_") + a + "_deg", "deg"});
+      for (const char* a : kAxis) cols.push_back({std::string("rho_lo_") + a + "_deg", "deg"});
+      for (const char* a : kAxis) cols.push_back({std::string("rho_hi_") + a + "_deg", "deg"});
+      for (const char* a : kAxis) cols.push_back({std::string("theta_") + a + "_deg", "deg"});
+      for (const char* a : kAxis) cols.push_back({std::string("theta_d_") + a + "_deg", "deg"});
+      for (const char* a : kAxis) cols.push_back({std::string("edot_") + a + "_deg_s", "deg/s"});
+      for (const char* a : kAxis) cols.push_back({std::string("omega_") + a + "_deg_s", "deg/s"});
+      for (const char* a : kAxis) cols.push_back({std::string("u_") + a + "_Nm", "N m"});
+      for (int m = 1; m <= 4; ++m) cols.push_back({"eta1_" + std::to_string(m), "kg^0.5 m"});
+      cols.push_back({"eta1_norm", "kg^0.5 m"});
+      cols.push_back({"mu_hat", "-"});
+      cols.push_back({"W_hat_norm", "-"});
+      if (overlay)
+        for (const char* a : kAxis) cols.push_back({std::string("e_") + a + "_deg_nominal_gains", "deg"});
+      csv = std::make_unique<CsvRecorder>(ctx.csv_path, cols, static_cast<int>(p.get_number("record_every")));
+    }
+
+    const Vec<2> window = p.get_vec<2>("window_s");
+    const double rho_inf_half_deg = 0.5 * rinf.maxCoeff() / d2r;
+    Vec3 err_ss = Vec3::Zero(), e_prev = e0, z_peak = Vec3::Constant(-INFINITY);
+    double torque_peak = 0, torque_late = 0, eta_max = 0, eta_late = 0, margin_min = INFINITY;
+    double p3_dev = 0, mu_min = INFINITY;
+    long violations = 0, crossings = 0, ctrl_flags = 0, nonok = 0;
+    std::size_t sample = 0;
+    Vec3 e_final = Vec3::Zero();
+    EulerTrackingCommand cmd;
+    std::vector<double> row;
+
+    auto control = [&](double t, const Plant::State& xs, Vec3& u) {
+      EulerTrackingMeasurement m;  // perfect measurements (Assumption 1, B.4 #4)
+      m.t = t;
+      m.angles = Plant::angles(xs);
+      m.omega_BN_B = Plant::omega_BN_B(xs);
+      const Status s = ppc_ ? ppc->step(m, ref.sample(t), cmd) : atc->step(m, ref.sample(t), cmd);
+      if (s == Status::out_of_range || s == Status::constraint_violated) ++ctrl_flags;
+      if (s != Status::ok) ++nonok;
+      u = cmd.torque_B;
+    };
+    auto observe = [&](double t, const Plant::State& xs, const Vec3& u) {
+      if (!(std::abs(Plant::angles(xs)(1)) < 89.0 * d2r))  // spec §B.2 guard: F is singular at 90°
+        throw SimError("closed loop diverged: |pitch| reached 89 deg at t = " + format_number(t) +
+                       " s (is control_period_s too long for this law? see the sample-rate study)");
+      const EulerReferenceSample rs = ref.sample(t);
+      const Vec3 e = Plant::angles(xs) - rs.angles;
+      const Vec3 e_deg = e / d2r;
+      Mat3 F;
+      const Vec3 w = Plant::omega_BN_B(xs);
+      const Vec3 edot = (euler123_F(Plant::angles(xs), F) == Status::ok ? Vec3(F * w) : Vec3::Constant(NAN)) - rs.angles_dot;
+      Vec3 lo, hi;
+      for (int i = 0; i < 3; ++i) {
+        const double rho = evaluate(pp.rho[i], t).rho;
+        const PpcBranch b = funnel_at0.branch(i);
+        const double z = e(i) / rho;
+        lo(i) = (b == PpcBranch::positive ? -pp.delta(i) : -1.0) * rho / d2r;
+        hi(i) = (b == PpcBranch::positive ? 1.0 : pp.delta(i)) * rho / d2r;
+        const double margin = ppc_margin(z, b, pp.delta(i));
+        margin_min = std::min(margin_min, margin);
+        if (!(margin > 0.0)) ++violations;                       // spec §B.6: every sample
+        z_peak(i) = std::max(z_peak(i), static_cast<double>(static_cast<int>(b)) * z);
+        if (sample > 0 && ((e(i) > 0) != (e_prev(i) > 0)) && e(i) != 0.0) ++crossings;
+        if (t >= window(0) && t <= window(1)) err_ss(i) = std::max(err_ss(i), std::abs(e_deg(i)));
+        if (t >= 90.0) p3_dev = std::max(p3_dev, std::abs(std::abs(e_deg(i)) - rho_inf_half_deg));
+      }
+      e_prev = e;
+      e_final = e_deg;
+      torque_peak = std::max(torque_peak, u.cwiseAbs().maxCoeff());
+      if (t >= 5.0) torque_late = std::max(torque_late, u.cwiseAbs().maxCoeff());
+      const double eta1 = Plant::eta(xs, 0).norm();
+      eta_max = std::max(eta_max, eta1);
+      if (t >= 50.0) eta_late = std::max(eta_late, eta1);
+      const double mu = ppc_ ? ppc->mu() : atc->mu();
+      mu_min = std::min(mu_min, mu);
+      if (capture)
+        for (int i = 0; i < 3; ++i) capture->e[i].push_back(e_deg(i));
+      if (csv) {
+        row.assign({t});
+        for (int i = 0; i < 3; ++i) row.push_back(e_deg(i));
+        for (int i = 0; i < 3; ++i) row.push_back(lo(i));
+        for (int i = 0; i < 3; ++i) row.push_back(hi(i));
+        for (int i = 0; i < 3; ++i) row.push_back(Plant::angles(xs)(i) / d2r);
+        for (int i = 0; i < 3; ++i) row.push_back(rs.angles(i) / d2r);
+        for (int i = 0; i < 3; ++i) row.push_back(edot(i) / d2r);
+        for (int i = 0; i < 3; ++i) row.push_back(w(i) / d2r);
+        for (int i = 0; i < 3; ++i) row.push_back(u(i));
+        for (int m = 0; m < 4; ++m) row.push_back(Plant::eta(xs, 0)(m));
+        row.push_back(eta1);
+        row.push_back(mu);
+        row.push_back((ppc_ ? ppc->weights() : atc->weights()).norm());
+        if (overlay)
+          for (int i = 0; i < 3; ++i)
+            row.push_back(sample < overlay->e[i].size() ? overlay->e[i][sample] : NAN);
+        if (t == p.get_number("duration_s")) csv->record_final(row.data()); else csv->record(row.data());
+      }
+      ++sample;
+    };
+    SampledDataOptions opt;
+    opt.t_end = p.get_number("duration_s");
+    opt.sample_period = T;
+    Rk4Integrator<FlexibleSimPlant> integ(sim, std::min(T, p.get_number("plant_step_max_s")));
+    run_sampled_data(sim, integ, x, opt, control, observe);
+    if (csv) csv->close();
+
+    RunResult r;
+    r.metrics = {{"err_ss_max_deg", err_ss.maxCoeff()},
+                 {"err_ss_max_deg_x", err_ss(0)},
+                 {"err_ss_max_deg_y", err_ss(1)},
+                 {"err_ss_max_deg_z", err_ss(2)},
+                 {"funnel_violations", double(violations)},
+                 {"zero_crossings", double(crossings)},
+                 {"err_final_deg_x", e_final(0)},
+                 {"err_final_deg_y", e_final(1)},
+                 {"err_final_deg_z", e_final(2)},
+                 {"torque_peak_Nm", torque_peak},
+                 {"eta_norm_max", eta_max},
+                 {"funnel_margin_min", margin_min},
+                 {"torque_peak_after_5s_Nm", torque_late},
+                 {"eta_norm_max_after_50s", eta_late},
+                 {"err_late_dev_from_half_rho_inf_deg", p3_dev},
+                 {"z_peak_x", z_peak(0)},
+                 {"z_peak_y", z_peak(1)},
+                 {"z_peak_z", z_peak(2)},
+                 {"mu_hat_min", mu_min},
+                 {"controller_flags", double(ctrl_flags)},
+                 {"nonok_steps", double(nonok)}};
+    add_claims(r, err_ss, violations, crossings, margin_min, p3_dev, eta_max, eta_late, torque_peak,
+               torque_late, ctrl_flags);
+    const std::string nm = name();
+    for (int i = 0; i < 3; ++i) {
+      const std::string ax = kAxis[i];
+      r.plots.push_back({nm + "-error-" + ax + ".png",
+                         std::string("Axis ") + ax + " tracking error and prescribed funnel (Figs. 2-4)", "t",
+                         {"e_" + ax + "_deg"}, "e [deg]", false,
+                         {{"rho_lo_" + ax + "_deg", "rho_hi_" + ax + "_deg"}}});
+    }
+    r.plots.push_back({nm + "-attitude.png", "Attitude and reference (Fig. 5)", "t",
+                       {"theta_x_deg", "theta_y_deg", "theta_z_deg", "theta_d_x_deg", "theta_d_y_deg", "theta_d_z_deg"},
+                       "angle [deg]", false});
+    r.plots.push_back({nm + "-rate-error.png", "Euler-rate tracking error (Fig. 6)", "t",
+                       {"edot_x_deg_s", "edot_y_deg_s", "edot_z_deg_s"}, "[deg/s]", false});
+    r.plots.push_back({nm + "-torque.png", "Control torque (Fig. 7)", "t", {"u_x_Nm", "u_y_Nm", "u_z_Nm"},
+                       "u [N m]", false});
+    r.plots.push_back({nm + "-modes.png", "Panel 1 modal coordinates (Fig. 8)", "t",
+                       {"eta1_1", "eta1_2", "eta1_3", "eta1_4"}, "eta [kg^0.5 m]", false});
+    r.plots.push_back({nm + "-adaptation.png", "Bound estimate mu_hat and |W_hat|", "t", {"mu_hat", "W_hat_norm"},
+                       "[-]", false});
+    return r;
+  }
+
+  void add_claims(RunResult& r, const Vec3& err_ss, long violations, long crossings, double margin,
+                  double p3_dev, double eta_max, double eta_late, double torque_peak, double torque_late,
+                  long flags) const {
+    char ours[200];
+    std::snprintf(ours, sizeof ours, "[%.3g, %.3g, %.3g] deg", err_ss(0), err_ss(1), err_ss(2));
+    const bool within = (err_ss.array() <= 0.005).all();
+    if (ppc_) {
+      char v[160];
+      std::snprintf(v, sizeof v, "%ld violations, min margin %.3f, %ld controller flags", violations, margin, flags);
+      r.claims.push_back({"paper", std::string(half_ ? "P6" : "P1") + " PPATC error always inside the funnel" +
+                                       (half_ ? " (halved gains)" : " (Figs. 2-4)"),
+                          "0 violations (PROTO min margin 0.167)", v, violations == 0 && flags == 0});
+      r.claims.push_back({"paper", std::string(half_ ? "P6" : "P2") + " PPATC steady-state accuracy 0.005 deg" +
+                                       (half_ ? " (halved gains)" : ""),
+                          "<= 0.005 deg every axis (PROTO 2.88e-3, 2.87e-3, 2.87e-3)", ours, within});
+      if (!half_) {
+        char d[120];
+        std::snprintf(d, sizeof d, "max ||e_i| - rho_inf/2| for t >= 90 s: %.2g deg", p3_dev);
+        r.claims.push_back({"paper", "P3 errors converge to +-rho_inf/2 (delta = 0, not stated in the paper)",
+                            "|e_i| -> 0.00250 deg within 2e-5 deg (PROTO)", d, p3_dev < 2e-5});
+      }
+    } else {
+      char v[160];
+      std::snprintf(v, sizeof v, "%ld axis-samples outside, %ld zero crossings", violations, crossings);
+      r.claims.push_back({"paper", std::string("P4 ATC violates the funnel (visible oscillation, Figs. 2-4)") +
+                                       (half_ ? " (halved gains)" : ""),
+                          ">= 1 violation and >= 1 zero crossing (PROTO 36% of samples)", v,
+                          half_ ? std::optional<bool>() : std::optional<bool>(violations >= 1 && crossings >= 1)});
+      if (!half_)
+        r.claims.push_back({"paper", "P5 ATC steady state misses 0.005 deg on all three axes",
+                            "all axes > 0.005 deg (paper); PROTO [2.12e-3, 5.61e-3, 1.14e-3]: only pitch",
+                            std::string(ours) + (within ? " - meets 0.005 on every axis: not reproduced"
+                                                        : " - only the axes above 0.005 miss it; 'all three' not reproduced"),
+                            std::nullopt});
+    }
+    if (!half_) {
+      char m[160];
+      std::snprintf(m, sizeof m, "max %.3g, after 50 s %.3g kg^0.5 m", eta_max, eta_late);
+      r.claims.push_back({"paper", "P8 flexible vibration suppressed (Fig. 8)", "bounded (PROTO 3.3e-4; <= 2.0e-4 after 50 s)",
+                          m, std::nullopt});
+      std::snprintf(m, sizeof m, "peak %.3g N m, after 5 s %.3g N m", torque_peak, torque_late);
+      r.claims.push_back({"paper", "P9 control torque (Fig. 7, no numbers in the paper)",
+                          "PROTO peak 38.5 N m at t = 0 (U_rad); 0.076 N m after 5 s", m, std::nullopt});
+    }
+  }
+
+  bool ppc_, half_;
+};
+
+}  // namespace
+
+std::unique_ptr<Scenario> make_flexible_ppc() { return std::make_unique<FlexibleScenario>(true, false); }
+std::unique_ptr<Scenario> make_flexible_atc() { return std::make_unique<FlexibleScenario>(false, false); }
+std::unique_ptr<Scenario> make_flexible_ppc_halfgain() { return std::make_unique<FlexibleScenario>(true, true); }
+std::unique_ptr<Scenario> make_flexible_atc_halfgain() { return std::make_unique<FlexibleScenario>(false, true); }
+
+}  // namespace adcs::sim
