@@ -92,6 +92,40 @@ void BM_HybridAdaptiveNormalized_Step(benchmark::State& state) {
 }
 BENCHMARK(BM_HybridAdaptiveNormalized_Step);
 
+// One step of a seed 002 Euler-angle law (PPATC or ATC) on the scenario's initial state, time
+// and angles moving each iteration: kinematics, (funnel transform,) RBF layer, adaptation.
+template <class Law>
+void euler_tracking_step(benchmark::State& state, Law& law) {
+  const adcs::SinusoidalEulerReference ref;
+  typename Law::Measurement m;
+  m.angles = adcs::Vec3(0.25, 0.15, -0.20) * (3.14159265358979 / 180.0);
+  m.omega_BN_B = adcs::Vec3(2e-4, 1e-4, -3e-4);
+  typename Law::Command out;
+  double k = 0.0;
+  for (auto _ : state) {
+    m.t = 1e-9 * k;
+    m.angles(0) += 1e-15;
+    k += 1.0;
+    benchmark::DoNotOptimize(law.step(m, ref.sample(m.t), out));
+    benchmark::DoNotOptimize(out.torque_B.data());
+    if (static_cast<long>(k) % 4096 == 0) law.reset();
+  }
+}
+void BM_FlexiblePPC_Step(benchmark::State& state) {
+  adcs::PpcNeuralParams p;
+  p.gains.J = adcs::flexible_params_seed002().J;
+  adcs::PpcNeural law(p);
+  euler_tracking_step(state, law);
+}
+BENCHMARK(BM_FlexiblePPC_Step);
+void BM_AdaptiveTracking_Step(benchmark::State& state) {
+  adcs::AdaptiveTrackingParams p;
+  p.gains.J = adcs::flexible_params_seed002().J;
+  adcs::AdaptiveTracking law(p);
+  euler_tracking_step(state, law);
+}
+BENCHMARK(BM_AdaptiveTracking_Step);
+
 // Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
 void BM_Pinv3x4(benchmark::State& state) {
   adcs::Mat<3, 4> X = four_wheel_axes();

@@ -16,6 +16,15 @@ inline double metric(const RunResult& r, const std::string& name) {
   return r.metric(name);
 }
 
+//! Every claim row with a verdict holds (rows without one are recorded, not asserted).
+inline void expect_claims_hold(const RunResult& r) {
+  for (const auto& c : r.claims) {
+    if (c.holds.has_value()) {
+      EXPECT_TRUE(*c.holds) << c.claim << ": " << c.ours;
+    }
+  }
+}
+
 inline RunResult run(const std::string& scenario,
                      const std::vector<std::pair<std::string, std::string>>& sets = {},
                      std::uint64_t seed = 0) {

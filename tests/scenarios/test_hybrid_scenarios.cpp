@@ -29,11 +29,7 @@ TEST(HybridAref, PaperClaimsR3toR7andR9) {
   EXPECT_NEAR(metric(r, "pinv_sigma_min"), 0.0170, 0.001);    // R9 PROTO
   EXPECT_LE(metric(r, "momentum_drift_rel"), 1e-10);          // S4 on TP-FULL, closed loop, 800 s
   EXPECT_EQ(metric(r, "nonok_steps"), 0.0);
-  for (const auto& c : r.claims) {
-    if (c.holds.has_value()) {
-      EXPECT_TRUE(*c.holds) << c.claim << ": " << c.ours;
-    }
-  }
+  adcs::sim::test::expect_claims_hold(r);
 }
 
 TEST(HybridAref, BaselineMatchesPrototype) {
