@@ -112,16 +112,12 @@ void euler_tracking_step(benchmark::State& state, Law& law) {
   }
 }
 void BM_FlexiblePPC_Step(benchmark::State& state) {
-  adcs::PpcNeuralParams p;
-  p.gains.J = adcs::flexible_params_seed002().J;
-  adcs::PpcNeural law(p);
+  adcs::PpcNeural law({adcs::seed002_tracking_gains(), adcs::seed002_performance()});
   euler_tracking_step(state, law);
 }
 BENCHMARK(BM_FlexiblePPC_Step);
 void BM_AdaptiveTracking_Step(benchmark::State& state) {
-  adcs::AdaptiveTrackingParams p;
-  p.gains.J = adcs::flexible_params_seed002().J;
-  adcs::AdaptiveTracking law(p);
+  adcs::AdaptiveTracking law({adcs::seed002_tracking_gains()});
   euler_tracking_step(state, law);
 }
 BENCHMARK(BM_AdaptiveTracking_Step);

@@ -19,9 +19,7 @@ using Plant = adcs::FlexibleSpacecraft<2, 4>;
 constexpr double kD2r = 3.14159265358979323846 / 180.0;
 
 adcs::PpcNeuralParams ppc_params() {
-  adcs::PpcNeuralParams p;
-  p.gains.J = adcs::flexible_params_seed002().J;
-  return p;
+  return adcs::PpcNeuralParams{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
 }
 
 // Seed 002 §B.5 closed loop, disturbance d(t) included, RK4 at the control period.
@@ -242,8 +240,7 @@ TEST(PpcNeural, DegreeConventionAlsoHoldsTheFunnelWithADifferentTransientBS13) {
 TEST(AdaptiveTracking, OracleClosedLoopIsMinusKsAndBadInputIsHeld) {
   // ṡ_e = D̄ − D̂ − robust − K s_e: with the estimates frozen at 0 and D̄ cancelled through ϑ̈_d,
   // s_e decays as exp(−K t) per axis.
-  adcs::AdaptiveTrackingParams p;
-  p.gains.J = adcs::flexible_params_seed002().J;
+  adcs::AdaptiveTrackingParams p{adcs::seed002_tracking_gains()};
   p.gains.compensator.tau_w.setZero();
   p.gains.compensator.tau_mu = 0.0;
   Loop<adcs::AdaptiveTracking> loop(p);

@@ -159,17 +159,13 @@ void euler_tracking_no_alloc(Law& law) {
 }
 
 TEST(NoMalloc, PpcNeuralStep) {
-  adcs::PpcNeuralParams p;
-  p.gains.J = adcs::flexible_params_seed002().J;
-  adcs::PpcNeural law(p);
+  adcs::PpcNeural law({adcs::seed002_tracking_gains(), adcs::seed002_performance()});
   ASSERT_EQ(law.status(), adcs::Status::ok);
   euler_tracking_no_alloc(law);
 }
 
 TEST(NoMalloc, AdaptiveTrackingStep) {
-  adcs::AdaptiveTrackingParams p;
-  p.gains.J = adcs::flexible_params_seed002().J;
-  adcs::AdaptiveTracking law(p);
+  adcs::AdaptiveTracking law({adcs::seed002_tracking_gains()});
   ASSERT_EQ(law.status(), adcs::Status::ok);
   euler_tracking_no_alloc(law);
 }

@@ -51,8 +51,7 @@ extern "C" int adcs_target_smoke(const double* in, double* out) {
   const adcs::Status s2 = adcs::euler321_F(adcs::dcm_to_euler321(C), F321);
   const adcs::SinusoidalRateReference ref;
   const adcs::MrpReferenceSample r = ref.sample(in[3], sigma);
-  adcs::PpcNeuralParams pp;
-  pp.gains.J = adcs::flexible_params_seed002().J;
+  const adcs::PpcNeuralParams pp{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
   adcs::PpcNeural ppc(pp);
   adcs::AdaptiveTracking atc(adcs::AdaptiveTrackingParams{pp.gains});
   adcs::EulerTrackingMeasurement m;

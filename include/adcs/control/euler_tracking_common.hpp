@@ -11,6 +11,7 @@
 #include "adcs/adapt/rbf_compensator.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
 
@@ -68,6 +69,13 @@ struct EulerTrackingGains {
   AngleUnits units = AngleUnits::radians;    //!< spec B.4 #18
   double control_period_s = 1.0e-4;          //!< [s] spec §B.5 (the paper's law is continuous)
 };
+
+//! The paper's gains with its true inertia (seed 002 Tables 1-2): what both laws use on §B.5.
+inline EulerTrackingGains seed002_tracking_gains() noexcept {
+  EulerTrackingGains g;
+  g.J = flexible_params_seed002().J;
+  return g;
+}
 
 struct EulerTrackingMeasurement {
   double t = 0.0;                   //!< [s] time since the start of the manoeuvre
