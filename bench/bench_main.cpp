@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
 
 #include "adcs/adcs.hpp"
 #ifdef ADCS_BENCH_HAVE_SIM
@@ -121,6 +122,82 @@ void BM_AdaptiveTracking_Step(benchmark::State& state) {
   euler_tracking_step(state, law);
 }
 BENCHMARK(BM_AdaptiveTracking_Step);
+
+// Seed 004, one 0.1 s sample. The filters are built from the drag-free model once.
+struct DragFreeBench {
+  adcs::DragFreeParams p;
+  adcs::DragFreeDiscrete d;
+  adcs::DragFreeEskf::Params e1;
+  adcs::SaturatedEsfParams e2[3];
+  DragFreeBench() {
+    if (adcs::drag_free_discretize(p, d) != adcs::Status::ok) std::abort();
+    const adcs::DragFreeNoise n = adcs::drag_free_noise(p);
+    e1.A_d = d.A_d;
+    e1.B_d = d.B_d;
+    e1.B_e = d.B_e;
+    e1.C_d = d.C_d;
+    e1.q.head<6>().setConstant(8.538e-13);
+    e1.S = (n.sigma_F_sc * n.sigma_F_sc) * adcs::Mat<9, 9>::Identity();
+    e1.R = (n.sigma_pos * n.sigma_pos) * adcs::Mat<9, 9>::Identity();
+    for (int j = 0; j < 3; ++j) {
+      adcs::DragFreeAxisModel m;
+      if (adcs::drag_free_axis_model(p, j, m) != adcs::Status::ok) std::abort();
+      e2[j].A_d = m.A_d;
+      e2[j].B_d = m.B_d;
+      e2[j].C = m.C;
+      e2[j].D = m.D;
+      e2[j].q = 8.538e-13;
+      e2[j].S = n.sigma_F_sc * n.sigma_F_sc;
+      e2[j].R_a = n.sigma_acc * n.sigma_acc;
+      e2[j].y_min = p.accel_min;
+      e2[j].y_max = p.accel_max;
+    }
+  }
+};
+
+void BM_DragFreeEskf_Step(benchmark::State& state) {
+  const DragFreeBench b;
+  adcs::DragFreeEskf f(b.e1);
+  adcs::Vec<9> Y = adcs::Vec<9>::Constant(1e-8), u = adcs::Vec<9>::Zero();
+  for (auto _ : state) {
+    Y(0) += 1e-12;
+    benchmark::DoNotOptimize(f.predict(u));
+    benchmark::DoNotOptimize(f.update(Y));
+  }
+}
+BENCHMARK(BM_DragFreeEskf_Step);
+
+void BM_SaturatedEsf_Step(benchmark::State& state) {  // alternating in-range and saturated samples
+  const DragFreeBench b;
+  adcs::SaturatedEsf f(b.e2[0]);
+  long k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(f.predict(0.0));
+    benchmark::DoNotOptimize(f.update((++k & 1) ? 1e-7 : 6e-6, 0.0));
+  }
+}
+BENCHMARK(BM_SaturatedEsf_Step);
+
+void BM_DragFreeAdrc_Step(benchmark::State& state) {  // Algorithms 1-3 + ADRC for one sample
+  const DragFreeBench b;
+  adcs::DragFreeEskf a1(b.e1);
+  adcs::SaturatedEsf a2[3] = {adcs::SaturatedEsf(b.e2[0]), adcs::SaturatedEsf(b.e2[1]), adcs::SaturatedEsf(b.e2[2])};
+  adcs::DragFreeAdrc ctrl(adcs::DragFreeAdrcParams{});
+  adcs::Vec<9> Y = adcs::Vec<9>::Constant(1e-8), u = adcs::Vec<9>::Zero();
+  for (auto _ : state) {
+    Y(0) += 1e-12;
+    benchmark::DoNotOptimize(a1.predict(u));
+    for (auto& f : a2) benchmark::DoNotOptimize(f.predict(u(4)));
+    benchmark::DoNotOptimize(a1.update(Y));
+    const adcs::Vec3 F(a2[0].state()(2), a2[1].state()(2), a2[2].state()(2));
+    benchmark::DoNotOptimize(ctrl.step(a1.state(), F, adcs::Vec3::Zero(), u));
+    for (int j = 0; j < 3; ++j) {
+      benchmark::DoNotOptimize(a2[j].update(1e-7, u(3 + j)));
+      benchmark::DoNotOptimize(adcs::fuse_axis(a1, a2[j], j));
+    }
+  }
+}
+BENCHMARK(BM_DragFreeAdrc_Step);
 
 // Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
 void BM_Pinv3x4(benchmark::State& state) {

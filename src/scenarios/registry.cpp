@@ -18,6 +18,9 @@ std::unique_ptr<Scenario> make_flexible_ppc();
 std::unique_ptr<Scenario> make_flexible_atc();
 std::unique_ptr<Scenario> make_flexible_ppc_halfgain();
 std::unique_ptr<Scenario> make_flexible_atc_halfgain();
+std::unique_ptr<Scenario> make_dragfree_estimators();
+std::unique_ptr<Scenario> make_dragfree_adrc();
+std::unique_ptr<Scenario> make_dragfree_pid();
 
 namespace {
 
@@ -34,6 +37,9 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_flexible_atc());
   v.push_back(make_flexible_ppc_halfgain());
   v.push_back(make_flexible_atc_halfgain());
+  v.push_back(make_dragfree_estimators());
+  v.push_back(make_dragfree_adrc());
+  v.push_back(make_dragfree_pid());
   return v;
 }
 

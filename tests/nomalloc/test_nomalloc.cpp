@@ -170,6 +170,67 @@ TEST(NoMalloc, AdaptiveTrackingStep) {
   euler_tracking_no_alloc(law);
 }
 
+// Seed 004: the ZOH discretisation (expm of a 36 x 36, construction time, fixed-size LU), then
+// one full 0.1 s sample (Algorithm 1, three Algorithm 2 incl. a saturated update, three fusions,
+// ADRC) repeated, and a rejected measurement.
+TEST(NoMalloc, DragFreeSample) {
+  const adcs::DragFreeParams p;
+  adcs::DragFreeDiscrete d;
+  long setup_allocs = 0;
+  adcs::Status disc = adcs::Status::ok;
+  {
+    NoAllocScope scope;
+    disc = adcs::drag_free_discretize(p, d);
+    setup_allocs = scope.allocations();
+  }
+  ASSERT_EQ(disc, adcs::Status::ok);
+  EXPECT_EQ(setup_allocs, 0);
+  adcs::DragFreeEskf::Params e1;
+  e1.A_d = d.A_d;
+  e1.B_d = d.B_d;
+  e1.B_e = d.B_e;
+  e1.C_d = d.C_d;
+  e1.q.head<6>().setConstant(8.5e-13);
+  e1.R = 5e-16 * adcs::Mat<9, 9>::Identity();
+  adcs::DragFreeEskf a1(e1);
+  adcs::DragFreeAxisModel m;
+  ASSERT_EQ(adcs::drag_free_axis_model(p, 0, m), adcs::Status::ok);
+  adcs::SaturatedEsfParams e2;
+  e2.A_d = m.A_d;
+  e2.B_d = m.B_d;
+  e2.C = m.C;
+  e2.D = m.D;
+  e2.q = 8.5e-13;
+  e2.R_a = 5e-24;
+  e2.y_min = p.accel_min;
+  e2.y_max = p.accel_max;
+  adcs::SaturatedEsf a2[3] = {adcs::SaturatedEsf(e2), adcs::SaturatedEsf(e2), adcs::SaturatedEsf(e2)};
+  adcs::DragFreeAdrc ctrl(adcs::DragFreeAdrcParams{});
+  adcs::Vec<9> u = adcs::Vec<9>::Zero(), Y = adcs::Vec<9>::Constant(1e-8);
+  long allocs = 0;
+  adcs::Status worst = adcs::Status::ok, rejected = adcs::Status::ok;
+  {
+    NoAllocScope scope;
+    for (int k = 0; k < 20; ++k) {
+      worst = adcs::worst(worst, a1.predict(u));
+      for (auto& f : a2) worst = adcs::worst(worst, f.predict(u(3)));
+      worst = adcs::worst(worst, a1.update(Y));
+      const adcs::Vec3 F(a2[0].state()(2), a2[1].state()(2), a2[2].state()(2));
+      worst = adcs::worst(worst, ctrl.step(a1.state(), F, adcs::Vec3::Zero(), u));
+      for (int j = 0; j < 3; ++j) {
+        worst = adcs::worst(worst, a2[j].update(k % 2 ? 6e-6 : 1e-7, u(3 + j)));
+        worst = adcs::worst(worst, adcs::fuse_axis(a1, a2[j], j));
+      }
+    }
+    Y(3) = std::numeric_limits<double>::quiet_NaN();
+    rejected = a1.update(Y);
+    allocs = scope.allocations();
+  }
+  EXPECT_EQ(allocs, 0);
+  EXPECT_TRUE(adcs::usable(worst)) << adcs::to_string(worst);
+  EXPECT_EQ(rejected, adcs::Status::non_finite_input);
+}
+
 TEST(NoMalloc, PlantDerivativeAndMathKernels) {
   adcs::RigidBodyRwParams<4> pp;
   pp.J_B = adcs::Vec3(900, 800, 600).asDiagonal();

@@ -15,6 +15,9 @@ template class FlexibleSpacecraft<2, 4>;
 template class PrescribedPerformance<3>;
 template class RbfLayer<6, 7>;
 template class RbfCompensator<6, 7, 3>;
+template class Eskf<27, 9, 9, 9>;
+template class Pid<1>;
+template bool keep_psd<27>(Mat<27, 27>&) noexcept;
 template Mat<7, 3> rbf_weight_step<7, 3>(const Mat<7, 3>&, const Vec<7>&, const Vec<3>&, const Vec<3>&, double,
                                          double) noexcept;
 template class MrpPd<3>;
@@ -61,7 +64,23 @@ extern "C" int adcs_target_smoke(const double* in, double* out) {
   const adcs::Status s3 = ppc.step(m, eref.sample(in[3]), cmd);
   const adcs::Status s4 = atc.step(m, eref.sample(in[3]), cmd);
   out[1] = cmd.torque_B.sum();
+  adcs::DragFreeDiscrete dfd;
+  const adcs::Status s5 = adcs::drag_free_discretize(adcs::DragFreeParams{}, dfd);
+  adcs::DragFreeEskf::Params ep;
+  ep.A_d = dfd.A_d;
+  ep.B_d = dfd.B_d;
+  ep.B_e = dfd.B_e;
+  ep.C_d = dfd.C_d;
+  adcs::DragFreeEskf alg1(ep);
+  adcs::SaturatedEsf alg2(adcs::SaturatedEsfParams{});
+  adcs::DragFreeAdrc adrc(adcs::DragFreeAdrcParams{});
+  adcs::Vec<9> u9 = adcs::Vec<9>::Zero();
+  const adcs::Status s6 = adcs::worst(alg1.predict(u9), alg1.update(adcs::Vec<9>::Constant(in[5])));
+  const adcs::Status s7 = adcs::worst(alg2.update(in[6], 0.0), adcs::fuse_axis(alg1, alg2, 0));
+  const adcs::Status s8 = adrc.step(alg1.state(), adcs::Vec3::Zero(), adcs::Vec3::Zero(), u9);
+  out[2] = u9.sum() + adcs::upper_truncated_std_normal(in[7]).mean + adcs::fal(in[8], 0.5, 0.01);
   out[0] = Gd.sum() + F.sum() + F321.sum() + r.sigma_ddot.sum() + adcs::so3_exp(sigma).sum() +
            adcs::normalized_step_scale(in[4], 0.2);
-  return static_cast<int>(s) + static_cast<int>(s2) + static_cast<int>(s3) + static_cast<int>(s4);
+  return static_cast<int>(s) + static_cast<int>(s2) + static_cast<int>(s3) + static_cast<int>(s4) +
+         static_cast<int>(s5) + static_cast<int>(s6) + static_cast<int>(s7) + static_cast<int>(s8);
 }

@@ -1,0 +1,151 @@
+#pragma once
+// Active disturbance rejection control of a drag-free satellite, seed 004 eqs. (44)-(46) and §4
+// gains (spec §B.7): a nonlinear PID (Han's fal) per loop plus compensation of the estimated
+// disturbances and of the modelled s/c-TM coupling, clipped to the actuator cube [−ρ, ρ]³:
+//
+//   T_Csc = I_sc T_Csc0 − T̂_Dsc                                                        (44)
+//   F_Csc = −F_Csc0 + m_sc ĥ_idf − F̂_Dsc,   ĥ_idf = −(K_trans r̂ + D_trans ṙ̂)/m_tm         (45)
+//   T_Ctm = I_tm T_Ctm0 − T̂_Dtm − I_tm ĥ_itm, ĥ_itm = I_tm⁻¹(K_rot φ̂_rel + D_rot φ̇̂_rel)   (46)
+//   X_0 = k_p fal(e_p) + k_i fal(e_i) + k_d fal(e_d) componentwise, fal(e, 0.5, 0.01)
+//
+// The integral is e_i = h Σ e_p with the integral gains halved by default (spec §B.7 [D]: the
+// paper's raw sum makes both linear-zone loops unstable); the literal raw sum is selectable.
+// The tracking differentiator is bypassed (the paper gives no parameters, spec B.10 #16).
+#include <cmath>
+
+#include "adcs/actuator/saturation.hpp"
+#include "adcs/control/pid.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/plant/drag_free.hpp"
+
+namespace adcs {
+
+//! Han's fal: e/δ^{1−α} for |e| ≤ δ, sign(e)|e|^α beyond (continuous at ±δ, odd, slope δ^{α−1}
+//! at 0).   Han 2009, IEEE TIE 56(3); seed 004 §2.4
+inline double fal(double e, double alpha, double delta) noexcept {
+  const double a = std::abs(e);
+  if (a <= delta) return e / std::pow(delta, 1.0 - alpha);
+  return std::copysign(std::pow(a, alpha), e);
+}
+
+enum class IntegralForm {
+  scaled_sum,  //!< e_i = h Σ e_p (spec §B.7 default [D], used with halved integral gains)
+  raw_sum,     //!< e_i = Σ e_p (the paper's literal form; linearly unstable with its gains)
+};
+
+//! The X-axis force law: the paper's NLPID, or the Fig. 9 baselines.
+enum class DragFreeXLaw {
+  nlpid,            //!< ADRC as (45)
+  pid,              //!< F_x = −(K_P e_p + K_I e_i + K_D e_d): linear, no compensation (Fig. 9 PID)
+  pid_compensated,  //!< the same PID + (m_sc ĥ_idf,x − F̂_Dsc,x) (Fig. 9 "ADRC")
+};
+
+struct NlpidGains {
+  double kp = 0.0, ki = 0.0, kd = 0.0;  //!< on fal(e_p), fal(e_i), fal(e_d)
+};
+
+struct DragFreeAdrcParams {
+  DragFreeParams plant{};                                //!< masses, inertias, couplings, h
+  NlpidGains attitude{0.001, 0.00005, 0.01};             //!< seed 004 §4; k_i halved [D]
+  NlpidGains drag_free{0.5, 0.005, 1.9};                 //!< seed 004 §4; k_i halved [D]
+  NlpidGains tm_attitude{0.0001, 0.0, 0.0021};           //!< seed 004 §4 (no integral)
+  double alpha = 0.5;                                    //!< fal exponent (seed 004 §4)
+  double delta = 0.01;                                   //!< fal linear zone (seed 004 §4)
+  IntegralForm integral = IntegralForm::scaled_sum;      //!< spec §B.7 [D]
+  double limit = 0.03;                                   //!< ρ1 = ρ2 = ρ3 [N m, N, N m]
+  DragFreeXLaw x_law = DragFreeXLaw::nlpid;
+  double pid_kp = 5.55, pid_ki = 0.0, pid_kd = 9.0;      //!< Fig. 9 PID [N/m, -, N s/m]
+};
+
+class DragFreeAdrc {
+ public:
+  using Params = DragFreeAdrcParams;
+
+  explicit DragFreeAdrc(const Params& p) noexcept : p_(p), pid_x_(pid_params(p)) {
+    const bool ok = std::isfinite(p_.alpha) && p_.alpha > 0.0 && p_.alpha <= 1.0 && std::isfinite(p_.delta) &&
+                    p_.delta > 0.0 && std::isfinite(p_.limit) && p_.limit > 0.0 && p_.plant.h > 0.0 &&
+                    p_.plant.m_tm > 0.0 && p_.plant.m_sc > 0.0 && all_finite(p_.plant.I_tm) &&
+                    all_finite(p_.plant.I_sc) && pid_x_.status() == Status::ok;
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+    reset();
+  }
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+
+  void reset() noexcept {
+    e_i_att_.setZero();
+    e_i_df_.setZero();
+    pid_x_.reset();
+    last_.setZero();
+  }
+
+  //! One 0.1 s sample. x_hat: Algorithm 1's posterior (27 states, after fusion of the previous
+  //! sample); F_D_hat: Algorithm 2's predicted f̂ per axis (spec §B.7 execution order);
+  //! phi_cmd [rad]: s/c attitude command. u = [T_Csc; F_Csc; T_Ctm] clipped to ±limit.
+  //! ok; saturated (some component clipped); non_finite_input (u = last command, integrals kept).
+  [[nodiscard]] Status step(const Vec<27>& x_hat, const Vec3& F_D_hat, const Vec3& phi_cmd, Vec<9>& u) noexcept {
+    u = last_;
+    if (status_ != Status::ok) return status_;
+    if (!all_finite(x_hat) || !all_finite(F_D_hat) || !all_finite(phi_cmd)) return Status::non_finite_input;
+    using Ix = DragFreeIndex;
+    const DragFreeParams& pl = p_.plant;
+    const Vec3 phi = x_hat.segment<3>(Ix::phi_sc), phi_dot = x_hat.segment<3>(Ix::phi_sc_dot);
+    const Vec3 r = x_hat.segment<3>(Ix::r), r_dot = x_hat.segment<3>(Ix::r_dot);
+    const Vec3 phr = x_hat.segment<3>(Ix::phi_rel), phr_dot = x_hat.segment<3>(Ix::phi_rel_dot);
+    const double w = p_.integral == IntegralForm::scaled_sum ? pl.h : 1.0;
+    const Vec3 e_p_att = phi_cmd - phi, e_p_df = -r;
+    const Vec3 e_i_att = e_i_att_ + w * e_p_att, e_i_df = e_i_df_ + w * e_p_df;
+    Vec3 T0, F0, Ttm0;
+    for (int a = 0; a < 3; ++a) {
+      T0(a) = nlpid(p_.attitude, e_p_att(a), e_i_att(a), -phi_dot(a));
+      F0(a) = nlpid(p_.drag_free, e_p_df(a), e_i_df(a), -r_dot(a));
+      Ttm0(a) = nlpid(p_.tm_attitude, -phr(a), 0.0, -phr_dot(a));
+    }
+    const Vec3 h_idf = -(pl.K_trans * r + pl.D_trans * r_dot) / pl.m_tm;      // (45)
+    const Vec3 h_itm_Itm = pl.K_rot * phr + pl.D_rot * phr_dot;               // I_tm ĥ_itm (46)
+    Vec<9> cmd;
+    cmd.segment<3>(0) = pl.I_sc * T0 - x_hat.segment<3>(Ix::T_Dsc);            // (44)
+    cmd.segment<3>(3) = -F0 + pl.m_sc * h_idf - F_D_hat;                       // (45)
+    Pid<1> pid_next = pid_x_;
+    if (p_.x_law != DragFreeXLaw::nlpid) {  // Fig. 9 baselines: F_x = −(K_P e_p + K_I e_i + K_D e_d)
+      Vec<1> out;
+      if (pid_next.step(Vec<1>(e_p_df(0)), Vec<1>(-r_dot(0)), out) != Status::ok) return Status::out_of_range;
+      cmd(3) = -out(0) + (p_.x_law == DragFreeXLaw::pid_compensated ? pl.m_sc * h_idf(0) - F_D_hat(0) : 0.0);
+    }
+    cmd.segment<3>(6) = pl.I_tm * Ttm0 - x_hat.segment<3>(Ix::T_Dtm) - h_itm_Itm;  // (46)
+    if (!all_finite(cmd)) return Status::out_of_range;
+    const int clipped = saturate_each<9>(cmd, Vec<9>::Constant(p_.limit));     // Note 2.5: [−ρ, ρ]³
+    e_i_att_ = e_i_att;
+    e_i_df_ = e_i_df;
+    pid_x_ = pid_next;
+    last_ = cmd;
+    u = cmd;
+    return clipped > 0 ? Status::saturated : Status::ok;
+  }
+
+  const Vec3& attitude_integral() const noexcept { return e_i_att_; }
+  const Vec3& drag_free_integral() const noexcept { return e_i_df_; }
+
+ private:
+  static PidParams<1> pid_params(const Params& p) noexcept {
+    PidParams<1> q;
+    q.kp(0) = p.pid_kp;
+    q.ki(0) = p.pid_ki;
+    q.kd(0) = p.pid_kd;
+    q.period_s = p.plant.h;
+    return q;
+  }
+  double nlpid(const NlpidGains& g, double e_p, double e_i, double e_d) const noexcept {
+    return g.kp * fal(e_p, p_.alpha, p_.delta) + g.ki * fal(e_i, p_.alpha, p_.delta) +
+           g.kd * fal(e_d, p_.alpha, p_.delta);
+  }
+
+  Params p_;
+  Pid<1> pid_x_;
+  Vec3 e_i_att_ = Vec3::Zero(), e_i_df_ = Vec3::Zero();
+  Vec<9> last_ = Vec<9>::Zero();
+  Status status_ = Status::ok;
+};
+
+}  // namespace adcs

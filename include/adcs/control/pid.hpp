@@ -1,0 +1,47 @@
+#pragma once
+// Discrete PID per channel: out = K_P e_p + K_I e_i + K_D e_d with e_i = h Σ_{j≤k} e_p,j (the
+// integral in units·s, spec §B.7 [D]); the caller supplies e_d (an estimated rate, not a
+// difference quotient). Used as seed 004's linear baseline (Fig. 9: K_P 5.55, K_I 0, K_D 9).
+#include <cmath>
+
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+template <int N>
+struct PidParams {
+  Vec<N> kp = Vec<N>::Zero();  //!< proportional gains
+  Vec<N> ki = Vec<N>::Zero();  //!< integral gains (per unit·s)
+  Vec<N> kd = Vec<N>::Zero();  //!< derivative gains
+  double period_s = 0.1;       //!< [s] h, the integration step of e_i
+};
+
+template <int N>
+class Pid {
+ public:
+  explicit Pid(const PidParams<N>& p) noexcept : p_(p) {
+    const bool ok = all_finite(p_.kp) && all_finite(p_.ki) && all_finite(p_.kd) && std::isfinite(p_.period_s) &&
+                    p_.period_s > 0.0;
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+  }
+  Status status() const noexcept { return status_; }
+  void reset() noexcept { e_i_.setZero(); }
+  const Vec<N>& integral() const noexcept { return e_i_; }
+
+  //! One sample. non_finite_input leaves the integral untouched and `out` unchanged.
+  [[nodiscard]] Status step(const Vec<N>& e_p, const Vec<N>& e_d, Vec<N>& out) noexcept {
+    if (status_ != Status::ok) return status_;
+    if (!all_finite(e_p) || !all_finite(e_d)) return Status::non_finite_input;
+    e_i_ += p_.period_s * e_p;
+    out = p_.kp.cwiseProduct(e_p) + p_.ki.cwiseProduct(e_i_) + p_.kd.cwiseProduct(e_d);
+    return Status::ok;
+  }
+
+ private:
+  PidParams<N> p_;
+  Vec<N> e_i_ = Vec<N>::Zero();
+  Status status_ = Status::ok;
+};
+
+}  // namespace adcs

@@ -1,0 +1,79 @@
+#pragma once
+// Fusion of the 27-state ESKF (Algorithm 1) with the per-axis saturated-accelerometer filters
+// (Algorithm 2), seed 004 Algorithm 3 (spec §B.6, eqs. (35)-(43)), for axis j:
+//
+//   Γ (3 x 27) selects r_j, ṙ_j, F_Dsc,j (indices 9+j, 12+j, 15+j), Γ⁺ = Γᵀ (orthonormal rows)
+//   X̂_1 = Γ X̂¹, P_1 = Γ P¹ Γᵀ;  X̂_o = Λ1 X̂_1 + Λ2 X̂_2 = [r̂ (Alg. 1); ṙ̂ (Alg. 1); f̂ (Alg. 2)]  (35)-(38)
+//   P_o = Λ1 P_1 Λ1 + Λ2 P_2 Λ2 (default [D], block-diagonal, PSD) or the literal Λ1 P_1 + Λ2 P_2
+//         made symmetric and PSD (option)                                                  (39)
+//   X̂¹ ← (I − ΓᵀΓ) X̂¹ + Γ⁺ X̂_o,  P¹ ← (I − ΓᵀΓ) P¹ (I − ΓᵀΓ)ᵀ + Γ⁺ P_o Γ⁺ᵀ                (40)-(41)
+//   X̂_2 ← X̂_o,  P_2 ← P_o                                                                (42)-(43)
+//
+// (41) as printed zeroes the cross-covariance between the three fused states and the other 24;
+// kept. The selection is applied by index (exactly Γ⁺ = Γᵀ; tests compare with the matrix form).
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/estimate/eskf.hpp"
+#include "adcs/estimate/extended_state_covariance.hpp"
+#include "adcs/estimate/saturated_esf.hpp"
+#include "adcs/plant/drag_free.hpp"
+
+namespace adcs {
+
+enum class FusedCovariance {
+  block_diagonal,  //!< Λ1 P_1 Λ1 + Λ2 P_2 Λ2 (spec §B.6 default [D])
+  literal,         //!< Λ1 P_1 + Λ2 P_2, then symmetrised and clipped PSD (option)
+};
+
+using DragFreeEskf = Eskf<kDragFreeStates, kDragFreeInputs, kDragFreeInputs, kDragFreeOutputs>;
+
+//! The Γ of axis j (spec §B.6), for tests and for users who want the matrix form.
+inline Mat<3, 27> fusion_selector(int axis) noexcept {
+  Mat<3, 27> G = Mat<3, 27>::Zero();
+  G(0, DragFreeIndex::r + axis) = 1.0;
+  G(1, DragFreeIndex::r_dot + axis) = 1.0;
+  G(2, DragFreeIndex::F_Dsc + axis) = 1.0;
+  return G;
+}
+
+//! Algorithm 3 for one axis: both filters leave with the fused estimate. non_finite_input
+//! (nothing changed) if either filter holds a non-finite estimate, invalid_parameter for a bad axis.
+[[nodiscard]] inline Status fuse_axis(DragFreeEskf& alg1, SaturatedEsf& alg2, int axis,
+                                      FusedCovariance mode = FusedCovariance::block_diagonal) noexcept {
+  if (axis < 0 || axis > 2) return Status::invalid_parameter;
+  const int idx[3] = {DragFreeIndex::r + axis, DragFreeIndex::r_dot + axis, DragFreeIndex::F_Dsc + axis};
+  const Vec<27>& x1 = alg1.state();
+  const Mat<27, 27>& P1 = alg1.covariance();
+  Vec3 X1;
+  Mat3 P1s;
+  for (int a = 0; a < 3; ++a) {
+    X1(a) = x1(idx[a]);                                      // (35)
+    for (int b = 0; b < 3; ++b) P1s(a, b) = P1(idx[a], idx[b]);  // (36)
+  }
+  const Vec3& X2 = alg2.state();
+  const Mat3& P2 = alg2.covariance();
+  const Vec3 Xo(X1(0), X1(1), X2(2));                        // (37)-(38)
+  Mat3 Po;
+  if (mode == FusedCovariance::block_diagonal) {
+    Po.setZero();
+    Po.topLeftCorner<2, 2>() = P1s.topLeftCorner<2, 2>();
+    Po(2, 2) = P2(2, 2);
+  } else {
+    Po << P1s.row(0), P1s.row(1), P2.row(2);                  // literal (39): not symmetric
+    keep_psd<3>(Po);
+  }
+  if (!all_finite(Xo) || !all_finite(Po) || !all_finite(x1) || !all_finite(P1)) return Status::non_finite_input;
+  Vec<27> x1n = x1;
+  Mat<27, 27> P1n = P1;
+  for (int a = 0; a < 3; ++a) {                              // (40)-(41)
+    x1n(idx[a]) = Xo(a);
+    P1n.row(idx[a]).setZero();
+    P1n.col(idx[a]).setZero();
+  }
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) P1n(idx[a], idx[b]) = Po(a, b);
+  if (alg1.set_estimate(x1n, P1n) != Status::ok) return Status::non_finite_input;
+  return alg2.set_estimate(Xo, Po);                          // (42)-(43)
+}
+
+}  // namespace adcs

@@ -1,0 +1,151 @@
+#pragma once
+// Extended-state filter with a saturation-constrained scalar measurement, seed 004 Algorithm 2
+// (spec §B.5, eqs. (15)-(34)): one instance per accelerometer axis, state X = [r; ṙ; f],
+//
+//   X_{k+1} = A_d X_k + B_d (u_k + w_k) + B_e G_k,   y_k = C X_k + D (u_k + w_k) + d_k,
+//   y_c,k = sat(y_k, y̲, ȳ)                                                            (13)-(14)
+//
+// The time update is Algorithm 1's with l = 1 (eqs. (18)-(19)). The measurement update is the
+// Kalman one while y_c is inside the range (31)-(32); when it sits on a bound the reading only
+// says y ≥ ȳ (or ≤ y̲), and the update uses the moments of the predicted y truncated to that
+// half-line (33)-(34), evaluated stably far in the tail (math/truncated_normal.hpp).
+// A "skip" mode (L3 of spec §B.9-1) ignores saturated samples instead.
+#include <cmath>
+
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/estimate/extended_state_covariance.hpp"
+#include "adcs/math/truncated_normal.hpp"
+
+namespace adcs {
+
+//! What a saturated reading does to the estimate.
+enum class SaturationUpdate {
+  truncated,  //!< set-valued update with truncated-normal moments (Algorithm 2, L1)
+  skip,       //!< no measurement update when saturated (L3 of spec §B.9-1)
+};
+
+struct SaturatedEsfParams {
+  Mat3 A_d = Mat3::Identity();                        //!< discrete state matrix (ZOH)
+  Vec3 B_d = Vec3::Zero();                            //!< discrete input column
+  Vec3 B_e = Vec3(0.0, 0.0, 1.0);                     //!< disturbance-increment selector
+  Eigen::RowVector3d C = Eigen::RowVector3d::Zero();  //!< measurement row (11)
+  double D = 0.0;                                     //!< direct input feedthrough (11)
+  double q = 0.0;                                     //!< bound on E[G²] (>= 0)
+  double S = 0.0;                                     //!< input-noise variance (>= 0)
+  double R_a = 1.0;                                   //!< accelerometer noise variance (> 0)
+  double y_min = -INFINITY;                           //!< range y̲ (< y_max; −inf: no lower bound)
+  double y_max = INFINITY;                            //!< range ȳ
+  Vec3 x0 = Vec3::Zero();                             //!< X̂_0 (spec §B.5: 0)
+  Mat3 P0 = 0.01 * Mat3::Identity();                  //!< P_0 (spec §B.5: 0.01 I)
+  ThetaPolicy theta_policy = ThetaPolicy::trace_optimal;
+  SaturationUpdate saturation = SaturationUpdate::truncated;
+};
+
+class SaturatedEsf {
+ public:
+  using Params = SaturatedEsfParams;
+
+  explicit SaturatedEsf(const Params& p) noexcept : p_(p) {
+    Q1_ = 4.0 * p_.q * p_.B_e * p_.B_e.transpose();  // (18), l = 1
+    Q2_ = p_.S * p_.B_d * p_.B_d.transpose();        // (19)
+    const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C) &&
+                    std::isfinite(p_.D) && std::isfinite(p_.q) && p_.q >= 0.0 && std::isfinite(p_.S) &&
+                    p_.S >= 0.0 && std::isfinite(p_.R_a) && p_.R_a > 0.0 && p_.y_min < p_.y_max &&
+                    !std::isnan(p_.y_min) && !std::isnan(p_.y_max) && all_finite(p_.x0) &&
+                    all_finite(p_.P0) && p_.P0.trace() > 0.0;
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+    theta_fixed_ = std::sqrt(Q1_.trace() / p_.P0.trace());
+    reset();
+  }
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+
+  void reset() noexcept {
+    x_ = p_.x0;
+    P_ = p_.P0;
+    saturated_updates_ = 0;
+  }
+
+  //! Time update with the applied input u_{k−1} (Algorithm 1's with l = 1; Ĝ from eq. (9)).
+  [[nodiscard]] Status predict(double u, double delta_f_nominal = 0.0) noexcept {
+    if (status_ != Status::ok) return status_;
+    if (!std::isfinite(u) || !std::isfinite(delta_f_nominal)) return Status::non_finite_input;
+    const double sq = std::sqrt(p_.q);
+    const double G_hat = std::fmin(std::fmax(delta_f_nominal, -sq), sq);
+    const Vec3 x_pred = p_.A_d * x_ + p_.B_d * u + p_.B_e * G_hat;
+    const Mat3 APA = p_.A_d * P_ * p_.A_d.transpose();
+    const double theta = young_weight<3>(p_.theta_policy, theta_fixed_, APA, Q1_);
+    Mat3 P_pred = bounded_increment_prediction<3>(APA, Q1_, Q2_, theta);
+    if (!all_finite(x_pred) || !all_finite(P_pred)) return Status::out_of_range;
+    keep_psd<3>(P_pred);
+    x_ = x_pred;
+    P_ = P_pred;
+    return Status::ok;
+  }
+
+  //! Measurement update with the (possibly saturated) reading y_c and the applied input u_k.
+  //! ok (in range), saturated (set-valued or skipped update used), non_finite_input /
+  //! ill_conditioned / out_of_range (state untouched).   eqs. (21)-(34)
+  [[nodiscard]] Status update(double y_c, double u) noexcept {
+    if (status_ != Status::ok) return status_;
+    if (!std::isfinite(y_c) || !std::isfinite(u)) return Status::non_finite_input;
+    const bool upper = y_c >= p_.y_max, lower = y_c <= p_.y_min;
+    if ((upper || lower) && p_.saturation == SaturationUpdate::skip) {
+      ++saturated_updates_;
+      return Status::saturated;
+    }
+    const double y_pred = p_.C.dot(x_) + p_.D * u;                  // ŷ⁻
+    const double R_eff = p_.R_a + p_.D * p_.D * p_.S;               // R_a + D² S
+    const double CPC = std::fmax(p_.C * P_ * p_.C.transpose(), 0.0);  // [D] clamp at >= 0
+    const double S_y = CPC + R_eff;                                 // (27)
+    if (!(S_y > 0.0) || !std::isfinite(S_y)) return Status::ill_conditioned;
+    const Vec3 K = P_ * p_.C.transpose() / S_y;                     // (22)
+    const Mat3 IKC = Mat3::Identity() - K * p_.C;
+    Mat3 P_new = IKC * P_ * IKC.transpose() + R_eff * K * K.transpose();  // (21) P*
+    Vec3 x_new;
+    if (!upper && !lower) {
+      x_new = x_ + K * (y_c - y_pred);                              // (31), (32)
+    } else {
+      const double sd = std::sqrt(S_y);
+      // Standardised distance of the bound from the prediction, towards the admissible side.
+      const double t = upper ? (p_.y_max - y_pred) / sd : (y_pred - p_.y_min) / sd;
+      const TruncatedMoments m = upper_truncated_std_normal(t);
+      const double mean = upper ? y_pred + sd * m.mean : y_pred - sd * m.mean;  // E[y | Y^k]
+      x_new = x_ + K * (mean - y_pred);                             // (33)
+      P_new += (S_y * m.variance) * K * K.transpose();              // (34)
+    }
+    if (!all_finite(x_new) || !all_finite(P_new)) return Status::out_of_range;
+    keep_psd<3>(P_new);
+    x_ = x_new;
+    P_ = P_new;
+    if (upper || lower) {
+      ++saturated_updates_;
+      return Status::saturated;
+    }
+    return Status::ok;
+  }
+
+  const Vec3& state() const noexcept { return x_; }
+  const Mat3& covariance() const noexcept { return P_; }
+  long saturated_updates() const noexcept { return saturated_updates_; }
+
+  //! Overwrites the estimate (fusion, Algorithm 3). Rejects non-finite values.
+  [[nodiscard]] Status set_estimate(const Vec3& x, const Mat3& P) noexcept {
+    if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
+    x_ = x;
+    P_ = P;
+    return Status::ok;
+  }
+
+ private:
+  Params p_;
+  Mat3 Q1_ = Mat3::Zero(), Q2_ = Mat3::Zero();
+  double theta_fixed_ = 0.0;
+  Status status_ = Status::ok;
+  Vec3 x_ = Vec3::Zero();
+  Mat3 P_ = Mat3::Identity();
+  long saturated_updates_ = 0;
+};
+
+}  // namespace adcs

@@ -1,0 +1,184 @@
+#pragma once
+// Drag-free satellite: spacecraft (s/c) attitude, s/c-to-test-mass (TM) relative displacement and
+// TM-to-s/c relative attitude, seed 004 eqs. (1)-(3) (spec §B.2), small-angle, linear:
+//
+//   φ̈_sc  = I_sc⁻¹ (T_Csc + w_TCsc + T_Dsc)                                                (1)
+//   r̈_rel = −(K_trans/m_tm) r_rel − (D_trans/m_tm) ṙ_rel − (F_Csc + w_FCsc + F_Dsc)/m_sc     (2)
+//   φ̈_rel = I_tm⁻¹K_rot φ_rel + I_tm⁻¹D_rot φ̇_rel + I_tm⁻¹(T_Ctm + w_TCtm + T_Dtm)
+//           − I_sc⁻¹(T_Csc + w_TCsc + T_Dsc)                                               (3)
+//
+// (printed "+" on K_rot, D_rot kept: negative electrostatic stiffness, spec B.10 #13), in the
+// extended form (6) with the disturbances f = [T_Dsc; F_Dsc; T_Dtm] appended after each loop
+// (27 states, spec §B.2.2), the per-axis accelerometer model (10)-(13) with its ±6e-6 m/s² range,
+// the exact ZOH discretisation at h (spec §B.3) and the noise densities → per-sample σ.
+//
+// 0-based state index map (spec §B.2.2): φ_sc 0-2, φ̇_sc 3-5, T_Dsc 6-8, r 9-11, ṙ 12-14,
+// F_D 15-17, φ_rel 18-20, φ̇_rel 21-23, T_Dtm 24-26. Inputs u = [T_Csc; F_Csc; T_Ctm] (9).
+// Units: rad, m, N, N m, kg, kg m², s.
+#include <cmath>
+
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+#include "adcs/math/expm.hpp"
+
+namespace adcs {
+
+inline constexpr int kDragFreeStates = 27;  //!< extended state (6)
+inline constexpr int kDragFreeInputs = 9;   //!< [T_Csc; F_Csc; T_Ctm]
+inline constexpr int kDragFreeOutputs = 9;  //!< [φ_sc; r_rel; φ_rel] (5)
+
+//! Index of the first component of each 3-block of the extended state (spec §B.2.2).
+struct DragFreeIndex {
+  static constexpr int phi_sc = 0, phi_sc_dot = 3, T_Dsc = 6, r = 9, r_dot = 12, F_Dsc = 15,
+                       phi_rel = 18, phi_rel_dot = 21, T_Dtm = 24;
+};
+
+//! Table 2 of seed 004 (every value GIVEN unless marked) and the sensor/actuator data of §4.
+struct DragFreeParams {
+  double m_tm = 1.0;                          //!< [kg] test mass
+  double m_sc = 1050.0;                       //!< [kg] spacecraft
+  Mat3 I_tm = 0.2667e-3 * Mat3::Identity();   //!< [kg m²]
+  Mat3 I_sc = (Mat3() << 200, 1, 2, 1, 2700, 1, 2, 1, 2650).finished();  //!< [kg m²]
+  Mat3 K_trans = 1e-6 * (Mat3() << 1, 0.039, 0.039, 0.039, 1, 0.039, 0.039, 0.039, 1).finished();  //!< [N/m]
+  Mat3 D_trans = 1.4e-11 * Mat3::Identity();  //!< [N s/m] (printed "N m s/rad", spec B.10 #10)
+  Mat3 K_rot = 1e-9 * (Mat3() << 1, 10, 10, 10, 1, 10, 10, 10, 1).finished();  //!< [N m/rad]
+  Mat3 D_rot = 1.4e-11 * Mat3::Identity();    //!< [N m s/rad]
+  double h = 0.1;                             //!< [s] sample and actuation period
+  double accel_min = -6e-6;                   //!< [m/s²] accelerometer range y̲
+  double accel_max = 6e-6;                    //!< [m/s²] accelerometer range ȳ
+  // One-sided amplitude spectral densities of white noise (spec §B.3, B.10 #4):
+  double asd_T_sc = 1e-8;   //!< [N m/√Hz] w_TCsc
+  double asd_F_sc = 1e-8;   //!< [N/√Hz] w_FCsc
+  double asd_T_tm = 1e-15;  //!< [N m/√Hz] w_TCtm
+  double asd_pos = 1e-8;    //!< [m/√Hz, rad/√Hz] displacement and attitude sensors
+  double asd_acc = 1e-12;   //!< [m s⁻²/√Hz] accelerometer
+  bool two_sided_noise = false;  //!< spec §B.3 option: σ² = ASD²/h instead of ASD²/(2h)
+};
+
+//! σ of a ZOH white sequence whose low-frequency one-sided PSD is asd²: σ² = asd²/(2h)
+//! (spec §B.3); the two-sided reading gives σ² = asd²/h.
+inline double asd_to_sigma(double asd, double h, bool two_sided) noexcept {
+  return asd * std::sqrt(two_sided ? 1.0 / h : 0.5 / h);
+}
+
+//! Per-sample noise standard deviations derived from the densities.
+struct DragFreeNoise {
+  double sigma_T_sc, sigma_F_sc, sigma_T_tm, sigma_pos, sigma_acc;
+};
+inline DragFreeNoise drag_free_noise(const DragFreeParams& p) noexcept {
+  const bool t = p.two_sided_noise;
+  return DragFreeNoise{asd_to_sigma(p.asd_T_sc, p.h, t), asd_to_sigma(p.asd_F_sc, p.h, t),
+                       asd_to_sigma(p.asd_T_tm, p.h, t), asd_to_sigma(p.asd_pos, p.h, t),
+                       asd_to_sigma(p.asd_acc, p.h, t)};
+}
+
+//! Continuous extended model (6): Ẋ = A X + B(u + w) + B_e ḟ, Y = C X + d (spec §B.2.2).
+struct DragFreeContinuous {
+  Mat<27, 27> A = Mat<27, 27>::Zero();
+  Mat<27, 9> B = Mat<27, 9>::Zero();
+  Mat<27, 9> B_e = Mat<27, 9>::Zero();
+  Mat<9, 27> C = Mat<9, 27>::Zero();
+};
+
+//! A, B, B_e, C of (6) from (4) with f moved into the state (block indices 0..8 of 3 x 3).
+inline DragFreeContinuous drag_free_continuous(const DragFreeParams& p) noexcept {
+  DragFreeContinuous m;
+  const Mat3 I = Mat3::Identity();
+  const Mat3 Isc_inv = p.I_sc.inverse(), Itm_inv = p.I_tm.inverse();
+  auto A = [&](int i, int j) { return m.A.block<3, 3>(3 * i, 3 * j); };
+  auto B = [&](int i, int j) { return m.B.block<3, 3>(3 * i, 3 * j); };
+  A(0, 1) = I;
+  A(1, 2) = Isc_inv;                                                         // (1)
+  A(3, 4) = I;
+  A(4, 3) = -p.K_trans / p.m_tm;                                             // (2)
+  A(4, 4) = -p.D_trans / p.m_tm;
+  A(4, 5) = -I / p.m_sc;
+  A(6, 7) = I;
+  A(7, 6) = Itm_inv * p.K_rot;                                               // (3), printed "+"
+  A(7, 7) = Itm_inv * p.D_rot;
+  A(7, 2) = -Isc_inv;
+  A(7, 8) = Itm_inv;
+  B(1, 0) = Isc_inv;
+  B(4, 1) = -I / p.m_sc;
+  B(7, 0) = -Isc_inv;
+  B(7, 2) = Itm_inv;
+  for (int i = 0; i < 3; ++i) m.B_e.block<3, 3>(3 * (3 * i + 2), 3 * i) = I;  // f after each loop
+  for (int i = 0; i < 3; ++i) m.C.block<3, 3>(3 * i, 9 * i) = I;             // φ_sc, r, φ_rel
+  return m;
+}
+
+//! Discrete model at h: [[A_d, B_d],[0, I]] = expm([[A, B],[0, 0]] h), C_d = C, and the discrete
+//! B_e is the continuous selector (f is piecewise constant and jumps by G_k at samples, §B.3).
+struct DragFreeDiscrete {
+  Mat<27, 27> A_d = Mat<27, 27>::Identity();
+  Mat<27, 9> B_d = Mat<27, 9>::Zero();
+  Mat<27, 9> B_e = Mat<27, 9>::Zero();
+  Mat<9, 27> C_d = Mat<9, 27>::Zero();
+};
+
+[[nodiscard]] inline Status drag_free_discretize(const DragFreeParams& p, DragFreeDiscrete& out) noexcept {
+  if (!(p.h > 0.0) || !std::isfinite(p.h)) return Status::invalid_parameter;
+  const DragFreeContinuous c = drag_free_continuous(p);
+  DragFreeDiscrete d;
+  const Status s = zoh_discretize<27, 9>(c.A, c.B, p.h, d.A_d, d.B_d);
+  if (s != Status::ok) return s;
+  d.B_e = c.B_e;
+  d.C_d = c.C;
+  out = d;
+  return Status::ok;
+}
+
+//! Per-axis accelerometer model (10)-(13), X = [r_j; ṙ_j; f_j], y = C X + D(u + w) + d, with
+//! the diagonal K_trans, D_trans only (spec §B.2.3 [A]: the 0.039e-6 N/m couplings go into f).
+struct DragFreeAxisModel {
+  Mat3 A_d = Mat3::Identity();
+  Vec3 B_d = Vec3::Zero();
+  Vec3 B_e = Vec3(0.0, 0.0, 1.0);
+  Eigen::RowVector3d C = Eigen::RowVector3d::Zero();  //!< [K/m_tm, D/m_tm, 1/m_sc]
+  double D = 0.0;                                     //!< [1/kg] 1/m_sc
+};
+
+[[nodiscard]] inline Status drag_free_axis_model(const DragFreeParams& p, int axis, DragFreeAxisModel& out) noexcept {
+  if (axis < 0 || axis > 2 || !(p.h > 0.0)) return Status::invalid_parameter;
+  const double K = p.K_trans(axis, axis), D = p.D_trans(axis, axis);
+  Mat3 A = Mat3::Zero();  // (12): [[A_o, B_o],[0, 0]]
+  A(0, 1) = 1.0;
+  A(1, 0) = -K / p.m_tm;
+  A(1, 1) = -D / p.m_tm;
+  A(1, 2) = -1.0 / p.m_sc;
+  Mat<3, 1> B;
+  B << 0.0, -1.0 / p.m_sc, 0.0;
+  DragFreeAxisModel m;
+  Mat<3, 1> B_d;
+  const Status s = zoh_discretize<3, 1>(A, B, p.h, m.A_d, B_d);
+  if (s != Status::ok) return s;
+  m.B_d = B_d;
+  m.C << K / p.m_tm, D / p.m_tm, 1.0 / p.m_sc;  // (11) C = [C_o, D_o]
+  m.D = 1.0 / p.m_sc;
+  out = m;
+  return Status::ok;
+}
+
+//! True accelerometer reading before noise and saturation, axis j, from the 27-state X and the
+//! applied force plus its noise (F_Csc + w_FCsc): y = (K_trans r + D_trans ṙ)_j/m_tm +
+//! (F_Csc + w_FCsc + F_Dsc)_j/m_sc (= −r̈_rel,j; full 3 x 3 K_trans, D_trans).   eq. (11)
+inline double drag_free_accelerometer(const DragFreeParams& p, const Vec<27>& X, const Vec3& F_applied,
+                                      int axis) noexcept {
+  using Ix = DragFreeIndex;
+  const Vec3 r = X.segment<3>(Ix::r), rd = X.segment<3>(Ix::r_dot), F_D = X.segment<3>(Ix::F_Dsc);
+  return (p.K_trans.row(axis).dot(r) + p.D_trans.row(axis).dot(rd)) / p.m_tm +
+         (F_applied(axis) + F_D(axis)) / p.m_sc;
+}
+
+//! Test-mass residual acceleration a_tm = −(K_trans r + D_trans ṙ)/m_tm [m/s²] (spec §B.2.1).
+inline Vec3 drag_free_tm_acceleration(const DragFreeParams& p, const Vec<27>& X) noexcept {
+  using Ix = DragFreeIndex;
+  return -(p.K_trans * X.segment<3>(Ix::r) + p.D_trans * X.segment<3>(Ix::r_dot)) / p.m_tm;
+}
+
+//! Accelerometer saturation (14): y_c = clamp(y, y̲, ȳ).
+inline double saturate_accelerometer(const DragFreeParams& p, double y) noexcept {
+  return y > p.accel_max ? p.accel_max : (y < p.accel_min ? p.accel_min : y);
+}
+
+}  // namespace adcs
