@@ -8,11 +8,13 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <set>
 
 #include "cli/atomic_file.hpp"
 #include "cli/json.hpp"
+#include "sim/recorder.hpp"
 #include "scenarios/registry.hpp"
 
 namespace adcs::sim::cli {
@@ -134,15 +136,40 @@ std::string csv_number(double x) {
 
 //! Renames the CSV and the JSON into place together: if the JSON cannot be committed, the CSV
 //! is taken back, so a run leaves both files or neither.
-void commit_outputs(TempFile& csv, TempFile& json, OutputDir& dir) {
+void commit_outputs(TempFile& csv, TempFile& json, OutputDir& dir,
+                    const std::vector<std::unique_ptr<TempFile>>& extra = {}) {
   csv.commit();
+  std::size_t done = 0;
   try {
+    for (; done < extra.size(); ++done) extra[done]->commit();
     json.commit();
   } catch (...) {
+    for (std::size_t i = 0; i < done; ++i) extra[i]->uncommit();
     csv.uncommit();
     throw;
   }
   dir.keep();
+}
+
+//! Writes each extra table of a run to its temporary file (same CSV format as the time series).
+std::vector<std::unique_ptr<TempFile>> write_tables(const RunResult& r, OutputDir& dir) {
+  std::vector<std::unique_ptr<TempFile>> files;
+  for (const Table& t : r.tables) {
+    if (t.names.size() != t.units.size() || t.names.size() != t.columns.size() || t.columns.empty())
+      throw RunFailure("table " + t.file + ": names, units and columns disagree");
+    files.push_back(std::make_unique<TempFile>(dir.path(), t.file));
+    std::vector<sim::Column> cols;
+    for (std::size_t i = 0; i < t.names.size(); ++i) cols.push_back({t.names[i], t.units[i]});
+    sim::CsvRecorder rec(files.back()->temp_path(), cols);
+    const std::size_t n = t.columns.front().size();
+    std::vector<double> row(cols.size());
+    for (std::size_t k = 0; k < n; ++k) {
+      for (std::size_t c = 0; c < cols.size(); ++c) row[c] = t.columns[c].at(k);
+      if (k + 1 == n) rec.record_final(row.data()); else rec.record(row.data());
+    }
+    rec.close();
+  }
+  return files;
 }
 
 int cmd_list(const Options&, const Catalog& catalog, std::ostream& out) {
@@ -219,6 +246,18 @@ int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
       for (const auto& [lo, hi] : p.fill) w.value(std::vector<std::string>{lo, hi});
       w.end_array();
     }
+    if (!p.csv.empty()) w.key("csv").value(p.csv);
+    if (!p.kind.empty()) w.key("kind").value(p.kind);
+    if (!p.hline.empty()) {
+      w.key("hline").begin_array();
+      for (const auto& [v, label] : p.hline) {
+        w.begin_array();
+        w.value(v);
+        w.value(label);
+        w.end_array();
+      }
+      w.end_array();
+    }
     w.end_object();
   }
   w.end_array();
@@ -226,7 +265,8 @@ int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
   w.end_object();
   json.write(w.str() + "\n");
 
-  commit_outputs(csv, json, dir);
+  const std::vector<std::unique_ptr<TempFile>> tables = write_tables(r, dir);
+  commit_outputs(csv, json, dir, tables);
 
   JsonWriter line;
   line.begin_object();

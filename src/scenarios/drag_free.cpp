@@ -438,10 +438,15 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
   const double fusion = rms(f_err_fused), a1 = rms(f_err_1), a2 = rms(f_err_2);
   // Item 8: Welch exactly as spec B.9-8 (Hann, 2^15, 50 %, mean removed, one-sided).
   double asd_med = NAN, asd_max = NAN, asd_f = NAN, asd_med_yz[2] = {NAN, NAN};
+  Table asd_table{"NAME-asd.csv", {"f_Hz"}, {"Hz"}, {}};
   for (int j = 0; j < 3; ++j) {
     if (a_tm[j].size() < 32768) break;
     const metrics::WelchResult wr = metrics::welch_psd(a_tm[j], 1.0 / h, 32768, 0.5);
     const std::vector<double> asd = metrics::asd(wr.psd);
+    if (asd_table.columns.empty()) asd_table.columns.push_back(wr.f_hz);
+    asd_table.names.push_back(std::string("asd_a_tm_") + "xyz"[j]);
+    asd_table.units.push_back("m s^-2/sqrt(Hz)");
+    asd_table.columns.push_back(asd);
     std::vector<double> band;
     double mx = 0, fmx = NAN;
     for (std::size_t i = 0; i < asd.size(); ++i)
@@ -550,7 +555,16 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
                         "|u_i| <= 0.03 (PROTO ~3 saturated accelerometer samples per axis at start-up)", b,
                         cmd_max <= ap.limit});
   }
-  r.plots = {
+  if (asd_table.columns.size() == 4) {
+    r.tables.push_back(asd_table);
+    PlotSpec sp{"NAME-asd.png", "TM residual acceleration ASD, Welch 2^15 Hann (Fig. 12)", "f_Hz",
+                {"asd_a_tm_x", "asd_a_tm_y", "asd_a_tm_z"}, "ASD [m s^-2/sqrt(Hz)]", true};
+    sp.csv = "NAME-asd.csv";
+    sp.kind = "psd";
+    sp.hline = {{3e-14, "requirement 3e-14 (1-30 mHz)"}};
+    r.plots.push_back(sp);
+  }
+  const std::vector<PlotSpec> plots = {
       {"NAME-alg2-drift.png", "r error: Algorithm 1 vs Algorithm 2 alone vs fused, X (Fig. 6)", "t",
        {"r_err_alg1_x", "r_err_alg2_x", "r_err_fused_x"}, "[m]", false},
       {"NAME-disturbance.png", "F_Dsc,x: truth, fused, Algorithm 1, Algorithm 2 (Figs. 7-8)", "t",
@@ -564,6 +578,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
       {"NAME-commands.png", "Commands (limit 0.03)", "t",
        {"u_1", "u_2", "u_3", "u_4", "u_5", "u_6", "u_7", "u_8", "u_9"}, "[N m, N]", false},
   };
+  r.plots.insert(r.plots.end(), plots.begin(), plots.end());
   return out;
 }
 
@@ -610,12 +625,12 @@ class DragFreeScenario final : public Scenario {
     if (kind_ == Kind::estimators) return run_estimators(p, ctx);
     if (kind_ == Kind::adrc) {
       RunResult r = run_closed_loop(p, ctx, kind_, DragFreeXLaw::nlpid).result;
-      for (auto& pl : r.plots) pl.file.replace(0, 4, name());
+      rename(r);
       return r;
     }
     LoopOutcome pid = run_closed_loop(p, ctx, kind_, DragFreeXLaw::pid);
     RunResult r = pid.result;
-    for (auto& pl : r.plots) pl.file.replace(0, 4, name());
+    rename(r);
     if (p.get_name("companion") == "run") {
       RunContext quiet = ctx;
       quiet.csv_path.clear();
@@ -632,6 +647,14 @@ class DragFreeScenario final : public Scenario {
   }
 
  private:
+  //! The closed-loop engine names its files NAME-…; put the scenario's name in.
+  void rename(RunResult& r) const {
+    for (auto& pl : r.plots) {
+      pl.file.replace(0, 4, name());
+      if (!pl.csv.empty()) pl.csv.replace(0, 4, name());
+    }
+    for (auto& t : r.tables) t.file.replace(0, 4, name());
+  }
   Kind kind_;
 };
 

@@ -38,6 +38,19 @@ struct PlotSpec {
   bool logy = false;
   //! Shaded bands between two columns (lo, hi), e.g. prescribed-performance funnels.
   std::vector<std::pair<std::string, std::string>> fill = {};
+  //! Read the columns from this extra table (RunResult::tables) instead of the time series.
+  std::string csv = {};
+  //! "psd": log-log axes for spectra; empty: linear (or logy).
+  std::string kind = {};
+  //! Horizontal reference lines (value, label), e.g. a requirement.
+  std::vector<std::pair<double, std::string>> hline = {};
+};
+
+//! A small extra table a run writes next to its time series (e.g. a spectrum), DIR/file.
+struct Table {
+  std::string file;                          //!< e.g. "dragfree-adrc-asd.csv"
+  std::vector<std::string> names, units;     //!< one per column
+  std::vector<std::vector<double>> columns;  //!< equal lengths
 };
 
 struct RunContext {
@@ -52,6 +65,7 @@ struct RunResult {
   std::vector<std::pair<std::string, double>> metrics;  // ordered; non-finite => JSON null
   std::vector<Claim> claims;
   std::vector<PlotSpec> plots;
+  std::vector<Table> tables;  //!< extra CSV files (written atomically with the run's outputs)
 
   //! The metric's value; NaN when there is no metric of that name (see has_metric).
   double metric(const std::string& name) const {
