@@ -25,6 +25,16 @@ constexpr double kPi = 3.14159265358979323846;
 
 enum class Kind { estimators, adrc, pid };
 
+//! Independent Gaussian streams per channel (spec §B.8 [A]), seeded from the run seed.
+struct NoiseStreams {
+  std::vector<Rng> w, d, a;
+  explicit NoiseStreams(std::uint64_t seed) {
+    for (int i = 0; i < 9; ++i) w.emplace_back(seed * 1000003u + 11u + i);
+    for (int i = 0; i < 9; ++i) d.emplace_back(seed * 1000003u + 101u + i);
+    for (int i = 0; i < 3; ++i) a.emplace_back(seed * 1000003u + 211u + i);
+  }
+};
+
 // ------------------------------------------------------------------ shared configuration
 struct DragFreeConfig {
   DragFreeParams plant;
@@ -44,6 +54,27 @@ struct DragFreeConfig {
       v(3 + i) = s;  // F_Dsc [N]
     }
     return v;
+  }
+  //! Writes f(t) into the disturbance entries of the 27-state truth (§B.3: after each step).
+  void set_disturbance(Vec<27>& X, double t) const {
+    const Vec<9> v = f(t);
+    X.segment<3>(DragFreeIndex::T_Dsc) = v.head<3>();
+    X.segment<3>(DragFreeIndex::F_Dsc) = v.segment<3>(3);
+    X.segment<3>(DragFreeIndex::T_Dtm) = v.tail<3>();
+  }
+  //! Actuator noise w_k = [w_TCsc; w_FCsc; w_TCtm] (§B.3 σ per sample).
+  Vec<9> input_noise(NoiseStreams& rng) const {
+    Vec<9> w;
+    for (int i = 0; i < 3; ++i) w(i) = noise.sigma_T_sc * rng.w[i].normal();
+    for (int i = 3; i < 6; ++i) w(i) = noise.sigma_F_sc * rng.w[i].normal();
+    for (int i = 6; i < 9; ++i) w(i) = noise.sigma_T_tm * rng.w[i].normal();
+    return w;
+  }
+  //! Displacement and attitude sensors Y = C X + d (5).
+  Vec<9> sensors(const Vec<27>& X, NoiseStreams& rng) const {
+    Vec<9> Y = model.C_d * X;
+    for (int i = 0; i < 9; ++i) Y(i) += noise.sigma_pos * rng.d[i].normal();
+    return Y;
   }
   SaturatedEsfParams esf(int axis, SaturationUpdate mode, bool saturating) const {
     DragFreeAxisModel m;
@@ -80,15 +111,6 @@ struct DragFreeConfig {
   }
 };
 
-//! Independent Gaussian streams per channel (spec §B.8 [A]), seeded from the run seed.
-struct NoiseStreams {
-  std::vector<Rng> w, d, a;
-  explicit NoiseStreams(std::uint64_t seed) {
-    for (int i = 0; i < 9; ++i) w.emplace_back(seed * 1000003u + 11u + i);
-    for (int i = 0; i < 9; ++i) d.emplace_back(seed * 1000003u + 101u + i);
-    for (int i = 0; i < 3; ++i) a.emplace_back(seed * 1000003u + 211u + i);
-  }
-};
 
 void declare_common(ParamSet& p, Kind kind) {
   const DragFreeParams d;
@@ -175,12 +197,7 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
   const bool truth_rates = p.get_name("r_source") == "truth";
   NoiseStreams rng(ctx.seed + 1);
   Vec<27> X = Vec<27>::Zero();
-  auto put_f = [&](double t) {
-    const Vec<9> f = c.f(t);
-    X.segment<3>(DragFreeIndex::T_Dsc) = f.head<3>();
-    X.segment<3>(DragFreeIndex::F_Dsc) = f.segment<3>(3);
-    X.segment<3>(DragFreeIndex::T_Dtm) = f.tail<3>();
-  };
+  auto put_f = [&](double t) { c.set_disturbance(X, t); };
   put_f(t0);
   DragFreeEskf alg1(c.eskf());
   SaturatedEsf L[3] = {SaturatedEsf(c.esf(0, SaturationUpdate::truncated, true)),
@@ -203,13 +220,9 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
       for (auto& l : L)
         if (l.predict(0.0) != Status::ok) throw SimError("Algorithm 2 predict failed");
     }
-    Vec<9> Y = c.model.C_d * X;
-    for (int i = 0; i < 9; ++i) Y(i) += c.noise.sigma_pos * rng.d[i].normal();
+    const Vec<9> Y = c.sensors(X, rng);
     if (alg1.update(Y) != Status::ok) throw SimError("Algorithm 1 update failed");
-    Vec<9> w;
-    for (int i = 0; i < 3; ++i) w(i) = c.noise.sigma_T_sc * rng.w[i].normal();
-    for (int i = 3; i < 6; ++i) w(i) = c.noise.sigma_F_sc * rng.w[i].normal();
-    for (int i = 6; i < 9; ++i) w(i) = c.noise.sigma_T_tm * rng.w[i].normal();
+    const Vec<9> w = c.input_noise(rng);
     const double y = drag_free_accelerometer(c.plant, X, w.segment<3>(3), 0) + c.noise.sigma_acc * rng.a[0].normal();
     const double yc = saturate_accelerometer(c.plant, y);
     saturated += (yc != y);
@@ -290,12 +303,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
   }
   NoiseStreams rng(ctx.seed + 1);
   Vec<27> X = Vec<27>::Zero();
-  auto put_f = [&](double t) {
-    const Vec<9> f = c.f(t);
-    X.segment<3>(DragFreeIndex::T_Dsc) = f.head<3>();
-    X.segment<3>(DragFreeIndex::F_Dsc) = f.segment<3>(3);
-    X.segment<3>(DragFreeIndex::T_Dtm) = f.tail<3>();
-  };
+  auto put_f = [&](double t) { c.set_disturbance(X, t); };
   put_f(0.0);
 
   std::unique_ptr<CsvRecorder> csv;
@@ -338,8 +346,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
       if (!ok) throw SimError("drag-free: filter prediction failed at t = " + format_number(t) + " s");
     }
     // 2. position/attitude sensors, Algorithm 1 updates
-    Vec<9> Y = c.model.C_d * X;
-    for (int i = 0; i < 9; ++i) Y(i) += c.noise.sigma_pos * rng.d[i].normal();
+    const Vec<9> Y = c.sensors(X, rng);
     if (alg1.update(Y) != Status::ok || alg1_alone.update(Y) != Status::ok)
       throw SimError("drag-free: Algorithm 1 update failed at t = " + format_number(t) + " s");
     // 3. control from Algorithm 1's posterior and Algorithm 2's predicted f̂
@@ -348,10 +355,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
     if (!usable(cs)) ++nonok;
     cmd_max = std::max(cmd_max, u.cwiseAbs().maxCoeff());
     // 4. actuator noise, accelerometer (includes u_k and w_k, eq. (13)), saturation
-    Vec<9> w;
-    for (int i = 0; i < 3; ++i) w(i) = c.noise.sigma_T_sc * rng.w[i].normal();
-    for (int i = 3; i < 6; ++i) w(i) = c.noise.sigma_F_sc * rng.w[i].normal();
-    for (int i = 6; i < 9; ++i) w(i) = c.noise.sigma_T_tm * rng.w[i].normal();
+    const Vec<9> w = c.input_noise(rng);
     for (int j = 0; j < 3; ++j) {
       const Vec3 F_applied = u.segment<3>(3) + w.segment<3>(3);
       const double y = drag_free_accelerometer(c.plant, X, F_applied, j) + c.noise.sigma_acc * rng.a[j].normal();
