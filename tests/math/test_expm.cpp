@@ -3,21 +3,9 @@
 // MatrixFunctions exp() in double and in long double, std::exp/cos/sin closed forms, Rodrigues'
 // formula, a fine RK4 integration and the double-integrator closed form.
 //
-// Heap check: Eigen's EIGEN_RUNTIME_NO_MALLOC guard is an eigen_assert, so it only exists with
-// asserts on; it is then enabled for this file, with EIGEN_STACK_ALLOCATION_LIMIT 0 so that
-// Eigen's alloca'd temporaries (Linux) take the heap path they take on arm-none-eabi, where
-// Eigen has no alloca. The check runs in a forked child and first proves the guard fires in this
-// binary (it cannot when another TU's unchecked copy of Eigen's inline allocator was linked);
-// otherwise it is skipped with the reason. The authoritative place for it is the nomalloc
-// target (asserts forced on, one definition for the whole binary).
-#if !defined(NDEBUG) && !defined(EIGEN_NO_DEBUG)
-#ifndef EIGEN_RUNTIME_NO_MALLOC
-#define EIGEN_RUNTIME_NO_MALLOC
-#endif
-#ifndef EIGEN_STACK_ALLOCATION_LIMIT
-#define EIGEN_STACK_ALLOCATION_LIMIT 0
-#endif
-#endif
+// Heap freedom of expm<36> (every Padé degree) and zoh_discretize<27, 9> is proved in the
+// nomalloc target, which forbids Eigen's heap and removes alloca like the Cortex-M7 build
+// (one Eigen configuration for the whole binary; defining it here would differ between TUs).
 
 #include <gtest/gtest.h>
 
@@ -35,9 +23,6 @@
 #include "adcs/math/expm.hpp"
 
 #if defined(__unix__)
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #endif
@@ -623,60 +608,6 @@ TEST(Zoh, OutputsMayAliasInputs) {
   ASSERT_EQ(ops.zoh_aliased(A2, B2, 0.7), Status::ok);
   EXPECT_TRUE(A2 == A_d);
   EXPECT_TRUE(B2 == B_d);
-}
-
-// =============================================================================================
-// No heap: expm<36> and zoh_discretize<27, 9> with Eigen's heap forbidden.
-
-#if defined(EIGEN_RUNTIME_NO_MALLOC) && defined(__unix__)
-//! True if Eigen's runtime heap check aborts a dynamic allocation in this binary (run in a child).
-bool eigen_heap_check_fires() {
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int devnull = open("/dev/null", O_WRONLY);
-    if (devnull >= 0) dup2(devnull, 2);  // silence the expected assertion message
-    Eigen::internal::set_is_malloc_allowed(false);
-    VectorXd v(64);
-    v.setOnes();
-    _exit(v.sum() == 64.0 ? 0 : 1);
-  }
-  int status = 0;
-  if (pid < 0 || waitpid(pid, &status, 0) != pid) return false;
-  return WIFSIGNALED(status);
-}
-
-//! Every expm branch at n = 36 and zoh_discretize<27, 9> at three steps with Eigen's heap
-//! forbidden; exits 0 if all returned ok (an allocation aborts instead).
-[[noreturn]] void run_with_heap_forbidden(const std::vector<Mat<36, 36>>& inputs, const Mat<27, 27>& A27,
-                                          const Mat<27, 9>& B27) {
-  Mat<36, 36> X;
-  Mat<27, 27> A_d;
-  Mat<27, 9> B_d;
-  bool ok = true;
-  Eigen::internal::set_is_malloc_allowed(false);
-  for (const Mat<36, 36>& A : inputs) ok = ok && adcs::expm<36>(A, X) == Status::ok;
-  for (double h : {0.001, 0.1, 10.0}) ok = ok && adcs::zoh_discretize<27, 9>(A27, B27, h, A_d, B_d) == Status::ok;
-  Eigen::internal::set_is_malloc_allowed(true);
-  std::exit(ok ? 0 : 3);
-}
-#endif
-
-TEST(ExpmNoHeap, Expm36AndZoh27x9RunWithTheHeapForbidden) {
-#if !defined(EIGEN_RUNTIME_NO_MALLOC) || !defined(__unix__)
-  GTEST_SKIP() << "Eigen's runtime heap check needs asserts on (NDEBUG/EIGEN_NO_DEBUG defined) and fork()";
-#else
-  if (!eigen_heap_check_fires())
-    GTEST_SKIP() << "Eigen's runtime heap check does not fire in this binary (another TU's unchecked "
-                    "inline allocator was linked); the nomalloc target covers this";
-  Rng rng(0xE301);
-  std::vector<Mat<36, 36>> inputs;
-  for (double nu : test_norms()) inputs.push_back(sample(rng, 36, Family::general, nu));
-  const Chained27 s = chained27(rng, 3750.0);
-  const Mat<27, 27> A27 = s.A;
-  const Mat<27, 9> B27 = s.B;
-  EXPECT_EXIT(run_with_heap_forbidden(inputs, A27, B27), ::testing::ExitedWithCode(0), "");
-#endif
 }
 
 }  // namespace

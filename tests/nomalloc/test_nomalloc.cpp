@@ -185,6 +185,24 @@ TEST(NoMalloc, DragFreeSample) {
   }
   ASSERT_EQ(disc, adcs::Status::ok);
   EXPECT_EQ(setup_allocs, 0);
+  {  // expm<36> on every Padé degree (3, 5, 7, 9, 13 with squarings): skew generators, bounded exp
+    adcs::Status st = adcs::Status::ok;
+    long allocs = 0;
+    {
+      NoAllocScope scope;
+      adcs::Mat<36, 36> A = adcs::Mat<36, 36>::Zero(), E;
+      for (double c : {1e-3, 0.1, 0.45, 1.0, 2.5, 500.0}) {
+        for (int i = 0; i + 1 < 36; ++i) {
+          A(i, i + 1) = c;
+          A(i + 1, i) = -c;
+        }
+        st = adcs::worst(st, adcs::expm<36>(A, E));
+      }
+      allocs = scope.allocations();
+    }
+    EXPECT_EQ(st, adcs::Status::ok);
+    EXPECT_EQ(allocs, 0);
+  }
   adcs::DragFreeEskf::Params e1;
   e1.A_d = d.A_d;
   e1.B_d = d.B_d;
@@ -222,6 +240,10 @@ TEST(NoMalloc, DragFreeSample) {
         worst = adcs::worst(worst, adcs::fuse_axis(a1, a2[j], j));
       }
     }
+    // The PSD projection fallback (eigen-decomposition) must be heap-free too.
+    adcs::Mat<27, 27> P_bad = adcs::Mat<27, 27>::Identity();
+    P_bad(0, 0) = -1e-3;
+    if (!adcs::keep_psd<27>(P_bad)) worst = adcs::Status::out_of_range;
     Y(3) = std::numeric_limits<double>::quiet_NaN();
     rejected = a1.update(Y);
     allocs = scope.allocations();
