@@ -10,8 +10,8 @@
 // measurement   K = P⁻Cᵀ(C P⁻ Cᵀ + R)⁻¹ (Cholesky solve, never an inverse), Joseph form for P.
 // N states, NU inputs, NL disturbance channels (l), NY measurements. No heap; noexcept.
 //
-// Cost: A_d's nonzeros are listed once at construction and A P Aᵀ is formed from them (the
-// drag-free A_d has 162 of 729), and the Joseph form is evaluated expanded,
+// Cost: A_d's and C_d's nonzeros are listed once at construction and A P Aᵀ, P Cᵀ are formed
+// from them (the drag-free A_d has 162 of 729 nonzeros, C_d 9 of 243), and the Joseph form is evaluated expanded,
 //   (I−KC)P(I−KC)ᵀ + KRKᵀ = P − K(PCᵀ)ᵀ − (PCᵀ)Kᵀ + K(CPCᵀ + R)Kᵀ,
 // the same expression for any gain K (so it keeps Joseph's robustness to a suboptimal K) without
 // the two N³ products.
@@ -67,6 +67,14 @@ class Eskf {
           a_val_[nnz_] = p_.A_d(i, j);
           ++nnz_;
         }
+    for (int j = 0; j < N; ++j)
+      for (int r = 0; r < NY; ++r)
+        if (p_.C_d(r, j) != 0.0) {
+          c_row_[c_nnz_] = static_cast<std::uint16_t>(r);
+          c_col_[c_nnz_] = static_cast<std::uint16_t>(j);
+          c_val_[c_nnz_] = p_.C_d(r, j);
+          ++c_nnz_;
+        }
     reset();
   }
 
@@ -105,7 +113,8 @@ class Eskf {
   [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(Y)) return Status::non_finite_input;
-    const Mat<N, NY> PCt = P_ * p_.C_d.transpose();
+    Mat<N, NY> PCt = Mat<N, NY>::Zero();  // P Cᵀ from C's nonzeros (a selector: 9 of 243)
+    for (int k = 0; k < c_nnz_; ++k) PCt.col(c_row_[k]) += c_val_[k] * P_.col(c_col_[k]);
     const Mat<NY, NY> S_y = p_.C_d * PCt + p_.R;
     const Eigen::LLT<Mat<NY, NY>> llt(S_y);
     if (llt.info() != Eigen::Success) return Status::ill_conditioned;
@@ -151,6 +160,9 @@ class Eskf {
   std::array<std::uint16_t, N * N> a_row_{}, a_col_{};
   std::array<double, N * N> a_val_{};
   int nnz_ = 0;
+  std::array<std::uint16_t, N * NY> c_row_{}, c_col_{};
+  std::array<double, N * NY> c_val_{};
+  int c_nnz_ = 0;
   Covariance Q1_ = Covariance::Zero(), Q2_ = Covariance::Zero();
   Vec<NL> sqrt_q_ = Vec<NL>::Zero();
   double theta_fixed_ = 0.0;
