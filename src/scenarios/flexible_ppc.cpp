@@ -200,9 +200,8 @@ class FlexibleScenario final : public Scenario {
       if (atc->status() != Status::ok) throw ParamError("ATC parameters rejected (gains, period)");
     }
     // The funnel both laws are judged against (spec §B.6): branches from e(0), δ, ρ(t).
-    const PrescribedPerformance<3> funnel(pp);
     const Vec3 th0 = d2r * p.get_vec<3>("theta0_deg");
-    PrescribedPerformance<3> funnel_at0 = funnel;
+    PrescribedPerformance<3> funnel_at0(pp);
     const Vec3 e0 = th0 - ref.sample(0.0).angles;
     if (funnel_at0.init(e0) != Status::ok) throw ParamError("e(0) is outside the funnel: |e_i(0)| must be < rho0");
 

@@ -59,22 +59,8 @@ class Eskf {
                     p_.P0.trace() > 0.0;
     status_ = ok ? Status::ok : Status::invalid_parameter;
     theta_fixed_ = p_.P0.trace() > 0.0 ? std::sqrt(Q1_.trace() / p_.P0.trace()) : 0.0;  // θ* (literal)
-    for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i)
-        if (p_.A_d(i, j) != 0.0) {
-          a_row_[nnz_] = static_cast<std::uint16_t>(i);
-          a_col_[nnz_] = static_cast<std::uint16_t>(j);
-          a_val_[nnz_] = p_.A_d(i, j);
-          ++nnz_;
-        }
-    for (int j = 0; j < N; ++j)
-      for (int r = 0; r < NY; ++r)
-        if (p_.C_d(r, j) != 0.0) {
-          c_row_[c_nnz_] = static_cast<std::uint16_t>(r);
-          c_col_[c_nnz_] = static_cast<std::uint16_t>(j);
-          c_val_[c_nnz_] = p_.C_d(r, j);
-          ++c_nnz_;
-        }
+    A_nz_.assign(p_.A_d);
+    C_nz_.assign(p_.C_d);
     reset();
   }
 
@@ -113,8 +99,7 @@ class Eskf {
   [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(Y)) return Status::non_finite_input;
-    Mat<N, NY> PCt = Mat<N, NY>::Zero();  // P Cᵀ from C's nonzeros (a selector: 9 of 243)
-    for (int k = 0; k < c_nnz_; ++k) PCt.col(c_row_[k]) += c_val_[k] * P_.col(c_col_[k]);
+    const Mat<N, NY> PCt = C_nz_.mul_by_transpose(P_);  // P Cᵀ (C a selector: 9 of 243)
     const Mat<NY, NY> S_y = p_.C_d * PCt + p_.R;
     const Eigen::LLT<Mat<NY, NY>> llt(S_y);
     if (llt.info() != Eigen::Success) return Status::ill_conditioned;
@@ -148,21 +133,39 @@ class Eskf {
   //! A P Aᵀ from A's nonzeros: M = P Aᵀ column by column, then A M = (Mᵀ Aᵀ)ᵀ the same way
   //! (P symmetric, so Mᵀ = A P); column operations are contiguous in Eigen's column-major storage.
   Covariance sandwich_A(const Covariance& P) const noexcept {
-    Covariance M = Covariance::Zero();
-    for (int k = 0; k < nnz_; ++k) M.col(a_row_[k]) += a_val_[k] * P.col(a_col_[k]);  // P Aᵀ
-    const Covariance Mt = M.transpose();
-    Covariance R = Covariance::Zero();
-    for (int k = 0; k < nnz_; ++k) R.col(a_row_[k]) += a_val_[k] * Mt.col(a_col_[k]);  // (A P Aᵀ)ᵀ
-    return R;
+    const Covariance M = A_nz_.mul_by_transpose(P);  // P Aᵀ
+    return A_nz_.mul_by_transpose(Covariance(M.transpose()));  // (A P Aᵀ)ᵀ
   }
 
+  //! The nonzeros of a fixed R x N matrix X, listed once, to form Y Xᵀ for an N-column Y.
+  template <int R>
+  struct Nonzeros {
+    std::array<std::uint16_t, R * N> row{}, col{};
+    std::array<double, R * N> val{};
+    int count = 0;
+    void assign(const Mat<R, N>& X) noexcept {
+      count = 0;
+      for (int j = 0; j < N; ++j)
+        for (int i = 0; i < R; ++i)
+          if (X(i, j) != 0.0) {
+            row[count] = static_cast<std::uint16_t>(i);
+            col[count] = static_cast<std::uint16_t>(j);
+            val[count] = X(i, j);
+            ++count;
+          }
+    }
+    //! Y Xᵀ column by column: (Y Xᵀ)(:, i) = Σ_j X(i, j) Y(:, j) (contiguous, column-major).
+    template <int NR>
+    Mat<NR, R> mul_by_transpose(const Mat<NR, N>& Y) const noexcept {
+      Mat<NR, R> out = Mat<NR, R>::Zero();
+      for (int k = 0; k < count; ++k) out.col(row[k]) += val[k] * Y.col(col[k]);
+      return out;
+    }
+  };
+
   Params p_;
-  std::array<std::uint16_t, N * N> a_row_{}, a_col_{};
-  std::array<double, N * N> a_val_{};
-  int nnz_ = 0;
-  std::array<std::uint16_t, N * NY> c_row_{}, c_col_{};
-  std::array<double, N * NY> c_val_{};
-  int c_nnz_ = 0;
+  Nonzeros<N> A_nz_;
+  Nonzeros<NY> C_nz_;
   Covariance Q1_ = Covariance::Zero(), Q2_ = Covariance::Zero();
   Vec<NL> sqrt_q_ = Vec<NL>::Zero();
   double theta_fixed_ = 0.0;
