@@ -236,9 +236,7 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
         xo.head<2>() << X(DragFreeIndex::r), X(DragFreeIndex::r_dot);
       } else {
         xo.head<2>() << alg1.state()(DragFreeIndex::r), alg1.state()(DragFreeIndex::r_dot);
-        const int ix[2] = {DragFreeIndex::r, DragFreeIndex::r_dot};
-        for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 2; ++b) Po(a, b) = alg1.covariance()(ix[a], ix[b]);
+        Po.topLeftCorner<2, 2>() = alg1.covariance_of<2>({DragFreeIndex::r, DragFreeIndex::r_dot});
       }
       if (L[l].set_estimate(xo, Po) != Status::ok) throw SimError("fusion failed");
       if (t - t0 >= 10.0) err[l].push_back(L[l].state()(2) - X(DragFreeIndex::F_Dsc));

@@ -22,12 +22,11 @@ using Mat3 = Mat<3, 3>;
 using Mat6 = Mat<6, 6>;
 
 //! True when every coefficient is finite (no NaN, no Inf). Works on any Eigen expression.
+//! x·0 is ±0 for every finite x and NaN for NaN or ±Inf, so one vectorised sum decides (IEEE
+//! arithmetic; the library is not built with -ffast-math, which would void every such check).
 template <class Derived>
 inline bool all_finite(const Eigen::DenseBase<Derived>& x) noexcept {
-  for (Eigen::Index j = 0; j < x.cols(); ++j)
-    for (Eigen::Index i = 0; i < x.rows(); ++i)
-      if (!std::isfinite(x(i, j))) return false;
-  return true;
+  return (x.derived().array() * typename Derived::Scalar(0)).sum() == typename Derived::Scalar(0);
 }
 
 inline bool all_finite(double x) noexcept { return std::isfinite(x); }

@@ -11,10 +11,9 @@
 // N states, NU inputs, NL disturbance channels (l), NY measurements. No heap; noexcept.
 //
 // Cost: A_d's and C_d's nonzeros are listed once at construction and A P Aᵀ, P Cᵀ are formed
-// from them (the drag-free A_d has 162 of 729 nonzeros, C_d 9 of 243), and the Joseph form is evaluated expanded,
-//   (I−KC)P(I−KC)ᵀ + KRKᵀ = P − K(PCᵀ)ᵀ − (PCᵀ)Kᵀ + K(CPCᵀ + R)Kᵀ,
-// the same expression for any gain K (so it keeps Joseph's robustness to a suboptimal K) without
-// the two N³ products.
+// from them (the drag-free A_d has 162 of 729 nonzeros, C_d 9 of 243), and the Joseph form is
+// evaluated expanded (update_candidate): the same expression for any gain K, so it keeps Joseph's
+// robustness to a suboptimal K, without the two N³ products.
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -51,6 +50,8 @@ class Eskf {
   explicit Eskf(const Params& p) noexcept : p_(p) {
     Q1_ = 4.0 * static_cast<double>(NL) * p_.B_e * p_.q.asDiagonal() * p_.B_e.transpose();  // Q1 = 4 B_e Q B_eᵀ, Q = l diag q
     Q2_ = p_.B_d * p_.S * p_.B_d.transpose();                                                 // Q2 = B_d S B_dᵀ
+    Q1_ = 0.5 * (Q1_ + Q1_.transpose()).eval();  // bit-symmetric, so the prediction is too
+    Q2_ = 0.5 * (Q2_ + Q2_.transpose()).eval();
     sqrt_q_ = p_.q.cwiseMax(0.0).cwiseSqrt();
     const Eigen::LLT<Mat<NY, NY>> llt(p_.R);
     const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C_d) &&
@@ -80,38 +81,94 @@ class Eskf {
   //! the state untouched.   Algorithm 1 time update, eq. (9)
   [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
     if (status_ != Status::ok) return status_;
-    if (!all_finite(u) || !all_finite(delta_f_nominal)) return Status::non_finite_input;
-    const Vec<NL> G_hat = delta_f_nominal.cwiseMax(-sqrt_q_).cwiseMin(sqrt_q_);  // eq. (9)
-    const State x_pred = p_.A_d * x_ + p_.B_d * u + p_.B_e * G_hat;
-    const Covariance APA = sandwich_A(P_);
-    const double theta = young_weight<N>(p_.theta_policy, theta_fixed_, APA, Q1_);
-    Covariance P_pred = bounded_increment_prediction<N>(APA, Q1_, Q2_, theta);
-    if (!all_finite(x_pred) || !all_finite(P_pred)) return Status::out_of_range;
-    symmetrize_and_flush<N>(P_pred);  // a sum of PSD terms; the update checks the cone
-    x_ = x_pred;
-    P_ = P_pred;
-    theta_ = theta;
-    return Status::ok;
+    const Covariance APA = propagated_covariance();
+    Candidate c;
+    const Status s = predict_candidate(u, delta_f_nominal, APA, young_weight<N>(p_.theta_policy, theta_fixed_, APA, Q1_), c);
+    if (s == Status::ok) accept(c);
+    return s;
   }
 
   //! Measurement update with Y_k (Joseph form). non_finite_input / ill_conditioned leave the
   //! state untouched.   Algorithm 1 measurement update
   [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
     if (status_ != Status::ok) return status_;
+    Candidate c;
+    const Status s = update_candidate(Y, c);
+    if (s == Status::ok) accept(c);
+    return s;
+  }
+
+  // ---- Two-phase form, for filters composed of several Eskf blocks (PartitionedEskf): each
+  // block computes a candidate, and the candidates are accepted only when every block succeeded.
+
+  //! A result of predict_candidate / update_candidate, not yet applied.
+  struct Candidate {
+    State x;
+    Covariance P;
+    double theta = -1.0;  //!< θ of a prediction; < 0 for an update
+    bool projected = false;
+  };
+
+  //! A_d P A_dᵀ from the current P (the first half of the time update; θ_k is taken from it).
+  Covariance propagated_covariance() const noexcept { return sandwich_A(P_); }
+  //! tr Q1, Q1 = 4 B_e (l diag q) B_eᵀ (θ_k = √(tr Q1 / tr APA)).
+  double q1_trace() const noexcept { return Q1_.trace(); }
+
+  //! The time update with a given A P Aᵀ and θ (see predict).
+  [[nodiscard]] Status predict_candidate(const Vec<NU>& u, const Vec<NL>& delta_f_nominal, const Covariance& APA,
+                                         double theta, Candidate& out) const noexcept {
+    if (status_ != Status::ok) return status_;
+    if (!all_finite(u) || !all_finite(delta_f_nominal)) return Status::non_finite_input;
+    const Vec<NL> G_hat = delta_f_nominal.cwiseMax(-sqrt_q_).cwiseMin(sqrt_q_);  // eq. (9)
+    out.x = A_nz_.mul_by_transpose(Mat<1, N>(x_.transpose())).transpose();  // A_d x (sparse)
+    out.x.noalias() += p_.B_d * u;
+    out.x.noalias() += p_.B_e * G_hat;
+    out.P = bounded_increment_prediction<N>(APA, Q1_, Q2_, theta);
+    if (!all_finite(out.x) || !all_finite(out.P)) return Status::out_of_range;
+    flush_negligible<N>(out.P);  // symmetric PSD terms (APA mirrored); the update checks the cone
+    out.theta = theta;
+    out.projected = false;
+    return Status::ok;
+  }
+
+  //! The measurement update (see update). Joseph form, expanded, with W = K S_y − P Cᵀ:
+  //!   (I−KC)P(I−KC)ᵀ + KRKᵀ = P − K(PCᵀ)ᵀ − (PCᵀ)Kᵀ + K S_y Kᵀ = P − K(PCᵀ)ᵀ + W Kᵀ
+  //! (exact for any K; W is the gain's residual, ~0 for the optimal K). K = P Cᵀ S_y⁻¹ by two
+  //! triangular solves with the Cholesky factor of S_y (never an inverse); only the lower
+  //! triangle of the symmetric result is formed, then mirrored.
+  [[nodiscard]] Status update_candidate(const Vec<NY>& Y, Candidate& out) const noexcept {
+    if (status_ != Status::ok) return status_;
     if (!all_finite(Y)) return Status::non_finite_input;
     const Mat<N, NY> PCt = C_nz_.mul_by_transpose(P_);  // P Cᵀ (C a selector: 9 of 243)
-    const Mat<NY, NY> S_y = p_.C_d * PCt + p_.R;
+    const Mat<NY, NY> S_y = p_.R + C_nz_.mul_by_transpose(Mat<NY, N>(PCt.transpose()));  // C P Cᵀ + R
     const Eigen::LLT<Mat<NY, NY>> llt(S_y);
     if (llt.info() != Eigen::Success) return Status::ill_conditioned;
-    const Mat<N, NY> K = llt.solve(PCt.transpose()).transpose();  // K = P Cᵀ S_y⁻¹ (S_y symmetric)
-    const State x_new = x_ + K * (Y - p_.C_d * x_);
-    const Mat<N, N> KPCt = K * PCt.transpose();
-    Covariance P_new = P_ - KPCt - KPCt.transpose() + K * (S_y * K.transpose());  // Joseph, expanded
-    if (!all_finite(x_new) || !all_finite(P_new)) return Status::out_of_range;
-    projections_ += keep_psd<N>(P_new);
-    x_ = x_new;
-    P_ = P_new;
+    const Mat<N, NY> K = solve_gain(llt.matrixLLT(), PCt);
+    const Vec<NY> innovation = Y - C_nz_.mul_by_transpose(Mat<1, N>(x_.transpose())).transpose();
+    out.x = x_;
+    out.x.noalias() += K * innovation;
+    Mat<N, 2 * NY> U, V;  // P − K PCtᵀ + W Kᵀ = P − U Vᵀ with U = [K, −W], V = [PCt, K]
+    U.template leftCols<NY>() = K;
+    U.template rightCols<NY>() = PCt;
+    U.template rightCols<NY>().noalias() -= K * S_y;  // −W
+    V.template leftCols<NY>() = PCt;
+    V.template rightCols<NY>() = K;
+    out.P = P_;
+    out.P.noalias() -= U.lazyProduct(V.transpose());
+    out.P.template triangularView<Eigen::StrictlyUpper>() = out.P.transpose();  // exact symmetry
+    if (!all_finite(out.x) || !all_finite(out.P)) return Status::out_of_range;
+    flush_negligible<N>(out.P);
+    out.projected = project_if_not_psd<N>(out.P);
+    out.theta = -1.0;
     return Status::ok;
+  }
+
+  //! Applies a candidate computed from the current estimate.
+  void accept(const Candidate& c) noexcept {
+    x_ = c.x;
+    P_ = c.P;
+    if (c.theta >= 0.0) theta_ = c.theta;
+    projections_ += c.projected ? 1 : 0;
   }
 
   const State& state() const noexcept { return x_; }
@@ -129,36 +186,83 @@ class Eskf {
     return Status::ok;
   }
 
+  //! Overwrites K states in place (fusion, Algorithm 3, eqs. (40)-(41)): x(idx) = x_o, the rows and
+  //! columns idx of P zeroed, P(idx, idx) = P_o. Indices must be distinct and in range
+  //! (invalid_parameter) and the values finite (non_finite_input); nothing changes otherwise.
+  template <int K>
+  [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
+    for (int a = 0; a < K; ++a) {
+      if (idx[a] < 0 || idx[a] >= N) return Status::invalid_parameter;
+      for (int b = 0; b < a; ++b)
+        if (idx[a] == idx[b]) return Status::invalid_parameter;
+    }
+    if (!all_finite(x_o) || !all_finite(P_o)) return Status::non_finite_input;
+    for (int a = 0; a < K; ++a) {
+      x_(idx[a]) = x_o(a);
+      P_.row(idx[a]).setZero();
+      P_.col(idx[a]).setZero();
+    }
+    for (int a = 0; a < K; ++a)
+      for (int b = 0; b < K; ++b) P_(idx[a], idx[b]) = P_o(a, b);
+    return Status::ok;
+  }
+
  private:
   //! A P Aᵀ from A's nonzeros: M = P Aᵀ column by column, then A M = (Mᵀ Aᵀ)ᵀ the same way
   //! (P symmetric, so Mᵀ = A P); column operations are contiguous in Eigen's column-major storage.
   Covariance sandwich_A(const Covariance& P) const noexcept {
     const Covariance M = A_nz_.mul_by_transpose(P);  // P Aᵀ
-    return A_nz_.mul_by_transpose(Covariance(M.transpose()));  // (A P Aᵀ)ᵀ
+    Covariance out = A_nz_.mul_by_transpose(Covariance(M.transpose()));  // (A P Aᵀ)ᵀ
+    out.template triangularView<Eigen::StrictlyUpper>() = out.transpose();  // exact symmetry
+    return out;
   }
 
-  //! The nonzeros of a fixed R x N matrix X, listed once, to form Y Xᵀ for an N-column Y.
+  //! K = PCt S_y⁻¹ from the Cholesky factor L (lower triangle of LLT): K Lᵀ... solved row-wise,
+  //! K L Lᵀ = PCt, i.e. forward substitution on the columns of Z = K L, then back substitution.
+  static Mat<N, NY> solve_gain(const Mat<NY, NY>& L, const Mat<N, NY>& PCt) noexcept {
+    Mat<N, NY> Z = PCt;  // Z Lᵀ = PCt  →  columns in increasing order
+    for (int m = 0; m < NY; ++m) {
+      for (int c = 0; c < m; ++c) Z.col(m) -= L(m, c) * Z.col(c);
+      Z.col(m) /= L(m, m);
+    }
+    Mat<N, NY> K = Z;  // K L = Z  →  columns in decreasing order
+    for (int m = NY - 1; m >= 0; --m) {
+      for (int c = m + 1; c < NY; ++c) K.col(m) -= L(c, m) * K.col(c);
+      K.col(m) /= L(m, m);
+    }
+    return K;
+  }
+
+  //! The nonzeros of a fixed R x N matrix X, listed once row by row, to form Y Xᵀ for an
+  //! N-column Y: (Y Xᵀ)(:, i) = Σ_j X(i, j) Y(:, j), each output column accumulated in registers
+  //! from contiguous input columns (column-major) and stored once.
   template <int R>
   struct Nonzeros {
-    std::array<std::uint16_t, R * N> row{}, col{};
+    std::array<std::uint16_t, R * N> col{};
     std::array<double, R * N> val{};
+    std::array<int, R + 1> start{};  //!< row i's entries are [start[i], start[i+1])
     int count = 0;
     void assign(const Mat<R, N>& X) noexcept {
       count = 0;
-      for (int j = 0; j < N; ++j)
-        for (int i = 0; i < R; ++i)
+      for (int i = 0; i < R; ++i) {
+        start[i] = count;
+        for (int j = 0; j < N; ++j)
           if (X(i, j) != 0.0) {
-            row[count] = static_cast<std::uint16_t>(i);
             col[count] = static_cast<std::uint16_t>(j);
             val[count] = X(i, j);
             ++count;
           }
+      }
+      start[R] = count;
     }
-    //! Y Xᵀ column by column: (Y Xᵀ)(:, i) = Σ_j X(i, j) Y(:, j) (contiguous, column-major).
     template <int NR>
     Mat<NR, R> mul_by_transpose(const Mat<NR, N>& Y) const noexcept {
-      Mat<NR, R> out = Mat<NR, R>::Zero();
-      for (int k = 0; k < count; ++k) out.col(row[k]) += val[k] * Y.col(col[k]);
+      Mat<NR, R> out;
+      for (int i = 0; i < R; ++i) {
+        Vec<NR> acc = Vec<NR>::Zero();
+        for (int k = start[i]; k < start[i + 1]; ++k) acc += val[k] * Y.col(col[k]);
+        out.col(i) = acc;
+      }
       return out;
     }
   };

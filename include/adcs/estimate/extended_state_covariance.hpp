@@ -21,49 +21,81 @@ enum class ThetaPolicy {
   fixed_initial,  //!< θ* = √(tr Q1 / tr P_0) for ever (the paper's literal choice)
 };
 
-//! (1+θ) APA + (1 + 1/θ) Q1 + Q2 with the limits θ → 0 (Q1 = 0) and θ → ∞ (APA = 0) taken
-//! exactly, so q = 0 channels (spec §B.8: T_Dtm) never produce 0·∞.
+//! (1+θ) APA + (1 + 1/θ) Q1 + Q2 with the limits θ → 0 (no increment bound: young_weight gives
+//! θ = 0 only when tr Q1 = 0, so Q1 = 0) and θ → ∞ (APA = 0) taken exactly, so q = 0 channels
+//! (spec §B.8: T_Dtm) never produce 0·∞. θ alone decides, so a block of a partitioned filter
+//! whose own Q1 is zero is still inflated by the θ of the whole filter (PartitionedEskf).
 template <int N>
 Mat<N, N> bounded_increment_prediction(const Mat<N, N>& APA, const Mat<N, N>& Q1, const Mat<N, N>& Q2,
                                        double theta) noexcept {
-  const double tQ1 = Q1.trace();
-  if (!(tQ1 > 0.0)) return APA + Q2;        // no increment bound: the plain Kalman prediction
-  if (!(theta > 0.0) || !std::isfinite(theta)) return APA + Q1 + Q2;  // degenerate θ: no inflation
+  if (!(theta > 0.0)) return APA + Q2;                  // no increment bound: the plain Kalman prediction
+  if (!std::isfinite(theta)) return APA + Q1 + Q2;      // APA = 0: no inflation
   return (1.0 + theta) * APA + (1.0 + 1.0 / theta) * Q1 + Q2;
 }
 
 //! θ for this step: θ_k from the current A P Aᵀ, or the fixed θ*. 0 when tr Q1 = 0.
+//! The same from the traces tr(A P Aᵀ) and tr Q1 (a filter split into blocks sums them).
+inline double young_weight(ThetaPolicy policy, double theta_fixed, double trace_APA, double trace_Q1) noexcept {
+  if (!(trace_Q1 > 0.0)) return 0.0;
+  if (policy == ThetaPolicy::fixed_initial) return theta_fixed;
+  return trace_APA > 0.0 ? std::sqrt(trace_Q1 / trace_APA) : INFINITY;
+}
 template <int N>
 double young_weight(ThetaPolicy policy, double theta_fixed, const Mat<N, N>& APA, const Mat<N, N>& Q1) noexcept {
-  const double tQ1 = Q1.trace();
-  if (!(tQ1 > 0.0)) return 0.0;
-  if (policy == ThetaPolicy::fixed_initial) return theta_fixed;
-  const double tAPA = APA.trace();
-  return tAPA > 0.0 ? std::sqrt(tQ1 / tAPA) : INFINITY;
+  return young_weight(policy, theta_fixed, APA.trace(), Q1.trace());
 }
 
-//! Symmetrises P, flushes negligible entries (see kCovarianceFlush) and, only if an LDLᵀ factorisation shows a negative pivot, projects it onto the
-//! PSD cone by clipping eigenvalues at 0 (spec §B.4 numerics). Returns true when it projected.
-//! For a PSD matrix the projection is the identity, so doing it only when needed changes
-//! nothing but the cost (O(n³/3) instead of an eigen-decomposition every step).
 //! Entries below kCovarianceFlush · tr(P) are set to zero: cross-covariances that decay
 //! geometrically otherwise end in the subnormal range, where every product costs ~100x (measured:
 //! the 27-state ESKF went from 40 µs to 400 µs per step). 1e-150 of the trace is far below any
 //! meaningful correlation, so nothing observable changes.
 inline constexpr double kCovarianceFlush = 1e-150;
 
+//! Sets entries below kCovarianceFlush · |tr P| to zero (one vectorised pass).
+template <int N>
+void flush_negligible(Mat<N, N>& P) noexcept {
+  const double floor = kCovarianceFlush * std::abs(P.trace());
+  P = (P.array().abs() < floor).select(0.0, P);
+}
+
 //! Symmetrises P and flushes negligible entries (the cheap half of keep_psd, for a sum of PSD
 //! terms such as the time update, which cannot leave the cone except by rounding).
 template <int N>
 void symmetrize_and_flush(Mat<N, N>& P) noexcept {
   P = 0.5 * (P + P.transpose()).eval();
-  const double floor = kCovarianceFlush * std::abs(P.trace());
-  P = (P.array().abs() < floor).select(0.0, P);
+  flush_negligible<N>(P);
 }
 
+//! True when the LDLᵀ factorisation of the symmetric P without pivoting has only positive pivots
+//! (P positive definite up to rounding; Sylvester). Square-root free and right-looking on a copy
+//! of the lower triangle: about N³/6 multiply-adds and N divisions, the cheap proof for the usual
+//! case (sqrt and divide latencies dominated the Cholesky variant at N = 18).
 template <int N>
-bool keep_psd(Mat<N, N>& P) noexcept {
-  symmetrize_and_flush<N>(P);
+bool positive_pivots(const Mat<N, N>& P) noexcept {
+  Mat<N, N> L = P;
+  double* a = L.data();  // column-major: a[i + N j] = L(i, j)
+  for (int k = 0; k < N; ++k) {
+    const double* __restrict ck = a + N * k;
+    const double d = ck[k];
+    if (!(d > 0.0)) return false;
+    const double inv = 1.0 / d;
+    for (int j = k + 1; j < N; ++j) {
+      double* __restrict cj = a + N * j;  // column j != column k: no overlap
+      const double ljk = ck[j] * inv;
+      for (int i = j; i < N; ++i) cj[i] -= ljk * ck[i];  // A(i,j) −= A(i,k) A(j,k) / d_k
+    }
+  }
+  return true;
+}
+
+//! For a symmetric P: if an LDLᵀ factorisation shows a negative pivot, projects P onto the PSD
+//! cone by clipping eigenvalues at 0 (spec §B.4 numerics). Returns true when it projected. For a
+//! PSD matrix the projection is the identity, so doing it only when needed changes nothing but
+//! the cost. positive_pivots proves the usual positive definite case; LDLT settles the
+//! semidefinite boundary.
+template <int N>
+bool project_if_not_psd(Mat<N, N>& P) noexcept {
+  if (positive_pivots<N>(P)) return false;
   const Eigen::LDLT<Mat<N, N>> ldlt(P);
   if (ldlt.info() == Eigen::Success && (ldlt.vectorD().array() >= 0.0).all()) return false;
   const Eigen::SelfAdjointEigenSolver<Mat<N, N>> es(P);
@@ -71,6 +103,13 @@ bool keep_psd(Mat<N, N>& P) noexcept {
   P = es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
   P = 0.5 * (P + P.transpose()).eval();
   return true;
+}
+
+//! Symmetrises P, flushes negligible entries and projects it onto the PSD cone when needed.
+template <int N>
+bool keep_psd(Mat<N, N>& P) noexcept {
+  symmetrize_and_flush<N>(P);
+  return project_if_not_psd<N>(P);
 }
 
 }  // namespace adcs

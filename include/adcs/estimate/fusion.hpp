@@ -10,10 +10,11 @@
 //   X̂_2 ← X̂_o,  P_2 ← P_o                                                                (42)-(43)
 //
 // (41) as printed zeroes the cross-covariance between the three fused states and the other 24;
-// kept. The selection is applied by index (exactly Γ⁺ = Γᵀ; tests compare with the matrix form).
+// kept. The selection is applied by index, in place (exactly Γ⁺ = Γᵀ; tests compare with the
+// matrix form).
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
-#include "adcs/estimate/eskf.hpp"
+#include "adcs/estimate/drag_free_eskf.hpp"
 #include "adcs/estimate/extended_state_covariance.hpp"
 #include "adcs/estimate/saturated_esf.hpp"
 #include "adcs/plant/drag_free.hpp"
@@ -24,8 +25,6 @@ enum class FusedCovariance {
   block_diagonal,  //!< Λ1 P_1 Λ1 + Λ2 P_2 Λ2 (spec §B.6 default [D])
   literal,         //!< Λ1 P_1 + Λ2 P_2, then symmetrised and clipped PSD (option)
 };
-
-using DragFreeEskf = Eskf<kDragFreeStates, kDragFreeInputs, kDragFreeInputs, kDragFreeOutputs>;
 
 //! The Γ of axis j (spec §B.6), for tests and for users who want the matrix form.
 inline Mat<3, 27> fusion_selector(int axis) noexcept {
@@ -41,15 +40,10 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
 [[nodiscard]] inline Status fuse_axis(DragFreeEskf& alg1, SaturatedEsf& alg2, int axis,
                                       FusedCovariance mode = FusedCovariance::block_diagonal) noexcept {
   if (axis < 0 || axis > 2) return Status::invalid_parameter;
-  const int idx[3] = {DragFreeIndex::r + axis, DragFreeIndex::r_dot + axis, DragFreeIndex::F_Dsc + axis};
+  const std::array<int, 3> idx{DragFreeIndex::r + axis, DragFreeIndex::r_dot + axis, DragFreeIndex::F_Dsc + axis};
   const Vec<27>& x1 = alg1.state();
-  const Mat<27, 27>& P1 = alg1.covariance();
-  Vec3 X1;
-  Mat3 P1s;
-  for (int a = 0; a < 3; ++a) {
-    X1(a) = x1(idx[a]);                                      // (35)
-    for (int b = 0; b < 3; ++b) P1s(a, b) = P1(idx[a], idx[b]);  // (36)
-  }
+  const Vec3 X1(x1(idx[0]), x1(idx[1]), x1(idx[2]));         // (35)
+  const Mat3 P1s = alg1.covariance_of<3>(idx);               // (36)
   const Vec3& X2 = alg2.state();
   const Mat3& P2 = alg2.covariance();
   const Vec3 Xo(X1(0), X1(1), X2(2));                        // (37)-(38)
@@ -62,17 +56,8 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
     Po << P1s.row(0), P1s.row(1), P2.row(2);                  // literal (39): not symmetric
     keep_psd<3>(Po);
   }
-  if (!all_finite(Xo) || !all_finite(Po) || !all_finite(x1) || !all_finite(P1)) return Status::non_finite_input;
-  Vec<27> x1n = x1;
-  Mat<27, 27> P1n = P1;
-  for (int a = 0; a < 3; ++a) {                              // (40)-(41)
-    x1n(idx[a]) = Xo(a);
-    P1n.row(idx[a]).setZero();
-    P1n.col(idx[a]).setZero();
-  }
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) P1n(idx[a], idx[b]) = Po(a, b);
-  if (alg1.set_estimate(x1n, P1n) != Status::ok) return Status::non_finite_input;
+  if (!all_finite(Xo) || !all_finite(Po) || !all_finite(x1) || !all_finite(P1s)) return Status::non_finite_input;
+  if (alg1.replace_substate<3>(idx, Xo, Po) != Status::ok) return Status::non_finite_input;  // (40)-(41)
   return alg2.set_estimate(Xo, Po);                          // (42)-(43)
 }
 
