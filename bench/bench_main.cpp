@@ -199,6 +199,43 @@ void BM_DragFreeAdrc_Step(benchmark::State& state) {  // Algorithms 1-3 + ADRC f
 }
 BENCHMARK(BM_DragFreeAdrc_Step);
 
+// Seed 003, one 8 Hz command from the chaser and target states (tracking error, G, G⁻¹, Ġξ_e, F0,
+// the law; the target's feed-forward ξ̇_o included), state 1 of the paper.
+struct Se3Bench {
+  adcs::Se3ScenarioParams sp;
+  adcs::Se3Spacecraft target_model{adcs::se3_target_params(sp)};
+  adcs::Se3SpacecraftState target, chaser;
+  Se3Bench() {
+    if (adcs::se3_target_initial_state(sp, target) != adcs::Status::ok) std::abort();
+    chaser = adcs::se3_chaser_initial_state(target, adcs::kSe3InitialPoses[0]);
+  }
+};
+
+template <class Law>
+void se3_step(benchmark::State& state, Law& law) {
+  Se3Bench b;
+  adcs::Vec6 u;
+  for (auto _ : state) {
+    b.chaser.R_N(0) += 1e-9;
+    adcs::Se3DesiredState d;
+    benchmark::DoNotOptimize(adcs::se3_desired_state(b.target_model, b.target, b.sp, d));
+    benchmark::DoNotOptimize(law.step(b.chaser, d, u));
+    benchmark::DoNotOptimize(u.data());
+  }
+}
+void BM_SE3PrescribedTime_Step(benchmark::State& state) {
+  const adcs::Se3ScenarioParams sp;
+  adcs::PrescribedTimeSe3 law(adcs::PrescribedTimeSe3Params{}, adcs::se3_chaser_nominal_params(sp));
+  se3_step(state, law);
+}
+BENCHMARK(BM_SE3PrescribedTime_Step);
+void BM_SE3Ftsmc_Step(benchmark::State& state) {
+  const adcs::Se3ScenarioParams sp;
+  adcs::FtsmcSe3 law(adcs::FtsmcSe3Params{}, adcs::se3_chaser_nominal_params(sp));
+  se3_step(state, law);
+}
+BENCHMARK(BM_SE3Ftsmc_Step);
+
 // Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
 void BM_Pinv3x4(benchmark::State& state) {
   adcs::Mat<3, 4> X = four_wheel_axes();

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <limits>
 #include <new>
 
 #include "adcs/adcs.hpp"
@@ -246,6 +247,43 @@ TEST(NoMalloc, DragFreeSample) {
     if (!adcs::keep_psd<27>(P_bad)) worst = adcs::Status::out_of_range;
     Y(3) = std::numeric_limits<double>::quiet_NaN();
     rejected = a1.update(Y);
+    allocs = scope.allocations();
+  }
+  EXPECT_EQ(allocs, 0);
+  EXPECT_TRUE(adcs::usable(worst)) << adcs::to_string(worst);
+  EXPECT_EQ(rejected, adcs::Status::non_finite_input);
+}
+
+// seed 003: both SE(3) laws and the sat → Q chain, including the rejected-input path.
+TEST(NoMalloc, Se3LawsAndQuantizer) {
+  const adcs::Se3ScenarioParams sp;
+  adcs::Se3SpacecraftState target;
+  ASSERT_EQ(adcs::se3_target_initial_state(sp, target), adcs::Status::ok);
+  adcs::Se3SpacecraftState chaser = adcs::se3_chaser_initial_state(target, adcs::kSe3InitialPoses[3]);
+  const adcs::Se3Spacecraft target_model(adcs::se3_target_params(sp));
+  adcs::PrescribedTimeSe3 ptc(adcs::PrescribedTimeSe3Params{}, adcs::se3_chaser_nominal_params(sp));
+  adcs::FtsmcSe3 ftsmc(adcs::FtsmcSe3Params{}, adcs::se3_chaser_nominal_params(sp));
+  adcs::CompositeQuantizer<6> q(adcs::seed003_quantizer_params());
+  const adcs::Vec6 limit = adcs::se3_actuator_limits(sp);
+  adcs::Status worst = adcs::Status::ok, rejected = adcs::Status::ok;
+  long allocs = 0;
+  {
+    NoAllocScope scope;
+    for (int k = 0; k < 5; ++k) {
+      adcs::Se3DesiredState d;
+      worst = adcs::worst(worst, adcs::se3_desired_state(target_model, target, sp, d));
+      adcs::Vec6 u, u_c;
+      worst = adcs::worst(worst, ptc.step(chaser, d, u));
+      worst = adcs::worst(worst, ftsmc.step(chaser, d, u));
+      const adcs::Status sq = adcs::saturate_then_quantize<6>(u, limit, q, u_c);
+      if (!adcs::usable(sq)) worst = sq;
+      chaser.R_N(0) += 0.1;
+    }
+    adcs::Se3DesiredState d;
+    (void)adcs::se3_desired_state(target_model, target, sp, d);
+    chaser.omega_BN_B(0) = std::numeric_limits<double>::quiet_NaN();
+    adcs::Vec6 u;
+    rejected = ptc.step(chaser, d, u);
     allocs = scope.allocations();
   }
   EXPECT_EQ(allocs, 0);

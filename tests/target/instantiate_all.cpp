@@ -17,6 +17,10 @@ template class RbfLayer<6, 7>;
 template class RbfCompensator<6, 7, 3>;
 template class Eskf<27, 9, 9, 9>;
 template class Pid<1>;
+template class PartitionedEskf<18, 9, 9, 9, 6, 3>;
+template class CompositeQuantizer<6>;
+template Status saturate_then_quantize<6>(const Vec<6>&, const Vec<6>&, CompositeQuantizer<6>&, Vec<6>&,
+                                          std::uint32_t*) noexcept;
 template bool keep_psd<27>(Mat<27, 27>&) noexcept;
 template Mat<7, 3> rbf_weight_step<7, 3>(const Mat<7, 3>&, const Vec<7>&, const Vec<3>&, const Vec<3>&, double,
                                          double) noexcept;
@@ -78,9 +82,24 @@ extern "C" int adcs_target_smoke(const double* in, double* out) {
   const adcs::Status s6 = adcs::worst(alg1.predict(u9), alg1.update(adcs::Vec<9>::Constant(in[5])));
   const adcs::Status s7 = adcs::worst(alg2.update(in[6], 0.0), adcs::fuse_axis(alg1, alg2, 0));
   const adcs::Status s8 = adrc.step(alg1.state(), adcs::Vec3::Zero(), adcs::Vec3::Zero(), u9);
+  // seed 003: SE(3) tracking with both laws, then sat → Q.
+  adcs::Se3ScenarioParams sp;
+  adcs::Se3SpacecraftState target;
+  const adcs::Status s9 = adcs::se3_target_initial_state(sp, target);
+  const adcs::Se3SpacecraftState chaser = adcs::se3_chaser_initial_state(target, adcs::kSe3InitialPoses[0]);
+  adcs::Se3DesiredState desired;
+  const adcs::Status s10 = adcs::se3_desired_state(adcs::Se3Spacecraft(adcs::se3_target_params(sp)), target, sp, desired);
+  adcs::PrescribedTimeSe3 ptc(adcs::PrescribedTimeSe3Params{}, adcs::se3_chaser_nominal_params(sp));
+  adcs::FtsmcSe3 ftsmc(adcs::FtsmcSe3Params{}, adcs::se3_chaser_nominal_params(sp));
+  adcs::CompositeQuantizer<6> quantizer(adcs::seed003_quantizer_params());
+  adcs::Vec6 u6, u6c;
+  const adcs::Status s11 = adcs::worst(ptc.step(chaser, desired, u6), ftsmc.step(chaser, desired, u6));
+  const adcs::Status s12 = adcs::saturate_then_quantize<6>(u6, adcs::se3_actuator_limits(sp), quantizer, u6c);
+  out[3] = u6c.sum() + adcs::se3_log(adcs::se3_exp(u6)).sum();
   out[2] = u9.sum() + adcs::upper_truncated_std_normal(in[7]).mean + adcs::fal(in[8], 0.5, 0.01);
   out[0] = Gd.sum() + F.sum() + F321.sum() + r.sigma_ddot.sum() + adcs::so3_exp(sigma).sum() +
            adcs::normalized_step_scale(in[4], 0.2);
   return static_cast<int>(s) + static_cast<int>(s2) + static_cast<int>(s3) + static_cast<int>(s4) +
-         static_cast<int>(s5) + static_cast<int>(s6) + static_cast<int>(s7) + static_cast<int>(s8);
+         static_cast<int>(s5) + static_cast<int>(s6) + static_cast<int>(s7) + static_cast<int>(s8) +
+         static_cast<int>(s9) + static_cast<int>(s10) + static_cast<int>(s11) + static_cast<int>(s12);
 }

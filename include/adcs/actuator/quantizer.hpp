@@ -1,0 +1,287 @@
+#pragma once
+// Composite logarithmic/uniform input quantizer with transmission counting: seed 003 §1.3
+// eqs. (12)–(16), spec §A.3 (structure [P]; forms [R] Fu & Xie 2005, Zhou, Wen & Yang 2014).
+// Per channel (parameters ρ ∈ (0,1), u_min > 0, u_s ≥ u_min, σ > 0):
+//
+//   u_j = ρ^{1−j} u_min  (j = 1..n),   δ = (1−ρ)/(1+ρ)
+//   Q_log(u) = sign(u) u_j   if u_j/(1+δ) < |u| ≤ u_j/(1−δ)        (hysteresis-free)
+//            = 0             if |u| ≤ u_min/(1+δ)                   (dead zone)
+//   Q_uni(u) = σ floor(u/σ + 1e-12)                        (floor type [A], error ∈ (−σ, 0])
+//   Q(u)     = Q_log(u) if |u| ≤ u_s, else Q_uni(u)
+//   |Q(u) − u| ≤ ϖ = max{σ, δ u_s + u_min}                          for every finite u [P]
+//
+// Interval boundaries are evaluated in one canonical floating-point form, b_j = u_j/(1+δ) (the
+// upper end of level j is b_{j+1}, equal to u_j/(1−δ) in exact arithmetic), so the levels tile
+// (0, ∞) in floating point too: no input falls in a gap or in two intervals. The spec's index
+// formula gives the level in O(1); a bounded snap against the b_j then makes the answer agree
+// with the interval definition even where ln() rounds across an integer.
+//
+// Per control tick (spec §A.3 [A]): u → sat → Q → clip → actuator, see saturate_then_quantize.
+// A channel transmits when its quantized value changes; the first tick transmits every channel:
+// N_tx = M + Σ_k Σ_i 1[u_c,i(k) ≠ u_c,i(k−1)].
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "adcs/actuator/saturation.hpp"
+#include "adcs/core/failure_hook.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+//! Largest number n of logarithmic levels per channel. [A] not in the paper: 32 magnitudes
+//! (5 bits + sign) covers u_s/u_min up to 2^31 at ρ = 0.5 and ≈1000 at ρ = 0.8; seed 003 needs
+//! n = 5 (torque) and 12 (force). Bounds the level table and every search loop.
+inline constexpr int kMaxQuantizerLevels = 32;
+
+//! One quantizer channel, in the channel's unit (N m for torques, N for forces). The defaults
+//! are the seed 003 torque row of spec §A.8 "Proposed Table 1" [A].
+struct QuantizerChannelParams {
+  double rho = 0.3;     //!< [-] log density ρ ∈ (0,1); smaller = coarser, fewer transmissions
+  double u_min = 1e-3;  //!< [N m | N] smallest level u_1 (> 0); |u| ≤ u_min/(1+δ) maps to 0
+  double u_s = 0.2;     //!< [N m | N] log/uniform switch (≥ u_min): log for |u| ≤ u_s
+  double sigma = 0.1;   //!< [N m | N] uniform step σ (> 0) above u_s
+};
+
+//! Sector bound δ = (1−ρ)/(1+ρ) of the log quantizer (spec §A.3).
+inline double quantizer_delta(const QuantizerChannelParams& p) noexcept {
+  return (1.0 - p.rho) / (1.0 + p.rho);
+}
+
+//! Level u_j = ρ^{1−j} u_min, j ≥ 1 (spec §A.3). The one formula every level comes from.
+inline double quantizer_level(const QuantizerChannelParams& p, int j) noexcept {
+  return p.u_min * std::pow(p.rho, static_cast<double>(1 - j));
+}
+
+//! Quantization-error bound ϖ = max{σ, δ u_s + u_min} (seed 003 [P], spec §A.3). The compensation
+//! amplitude of the controller must satisfy ζ ≥ ϖ (spec §A.5).
+inline double quantizer_error_bound(const QuantizerChannelParams& p) noexcept {
+  return std::max(p.sigma, quantizer_delta(p) * p.u_s + p.u_min);
+}
+
+//! Number of levels n = ceil(ln(u_s(1+δ)/u_min)/ln(1/ρ)) (spec §A.3): the smallest n ≥ 1 with
+//! u_s ≤ u_{n+1}/(1+δ), i.e. just enough levels to cover |u| ≤ u_s. Returns
+//! kMaxQuantizerLevels + 1 when more are needed. Requires ρ ∈ (0,1), 0 < u_min ≤ u_s (finite).
+inline int quantizer_level_count(const QuantizerChannelParams& p) noexcept {
+  const double one_plus_delta = 1.0 + quantizer_delta(p);
+  const double nd = std::ceil(std::log(p.u_s * one_plus_delta / p.u_min) / -std::log(p.rho));
+  if (!(nd <= kMaxQuantizerLevels)) return kMaxQuantizerLevels + 1;  // before the int cast
+  int n = std::max(1, static_cast<int>(nd));
+  // ln() may round across an integer when u_s sits on a boundary: snap to the b_j definition.
+  // Each loop moves n at most kMaxQuantizerLevels times (in practice at most once).
+  while (n > 1 && p.u_s <= quantizer_level(p, n) / one_plus_delta) --n;
+  while (n <= kMaxQuantizerLevels && p.u_s > quantizer_level(p, n + 1) / one_plus_delta) ++n;
+  return n;
+}
+
+//! True when the channel defines a quantizer: finite, ρ ∈ (0,1), 0 < u_min ≤ u_s, σ > 0 and
+//! n ≤ kMaxQuantizerLevels.
+inline bool valid(const QuantizerChannelParams& p) noexcept {
+  const bool finite = std::isfinite(p.rho) && std::isfinite(p.u_min) && std::isfinite(p.u_s) &&
+                      std::isfinite(p.sigma);
+  return finite && p.rho > 0.0 && p.rho < 1.0 && p.u_min > 0.0 && p.u_s >= p.u_min &&
+         p.sigma > 0.0 && quantizer_level_count(p) <= kMaxQuantizerLevels;
+}
+
+//! One channel with its derived constants (δ, n, the level table, ln terms) computed once.
+//! Invariant when status() == ok: |quantize(u) − u| ≤ error_bound() for every finite u, and
+//! quantize() is odd for |u| ≤ u_s. Non-finite u passes through unchanged (callers check
+//! first); so does every u when status() != ok (n = 0), so a rejected channel never invents a
+//! command.
+class QuantizerChannel {
+ public:
+  //! The seed 003 torque channel (QuantizerChannelParams defaults).
+  QuantizerChannel() noexcept : QuantizerChannel(QuantizerChannelParams{}) {}
+  explicit QuantizerChannel(const QuantizerChannelParams& p) noexcept : p_(p) {
+    if (!ADCS_CHECK(valid(p_), "QuantizerChannel: need rho in (0,1), 0 < u_min <= u_s, sigma > 0, "
+                               "n <= kMaxQuantizerLevels")) {
+      status_ = Status::invalid_parameter;
+      return;
+    }
+    delta_ = quantizer_delta(p_);
+    one_plus_delta_ = 1.0 + delta_;
+    n_ = quantizer_level_count(p_);
+    for (int j = 1; j <= n_; ++j) levels_[j - 1] = quantizer_level(p_, j);
+    log_offset_ = std::log(one_plus_delta_ / p_.u_min);  // j = ceil((ln|u| + this) / ln(1/ρ))
+    inv_log_inv_rho_ = -1.0 / std::log(p_.rho);
+    bound_ = quantizer_error_bound(p_);
+  }
+
+  Status status() const noexcept { return status_; }
+  const QuantizerChannelParams& params() const noexcept { return p_; }
+  double delta() const noexcept { return delta_; }        //!< [-] δ
+  int level_count() const noexcept { return n_; }         //!< [-] n
+  double error_bound() const noexcept { return bound_; }  //!< [N m | N] ϖ
+  //! u_j for j = 1..n (the table the quantizer uses); 0 outside that range.
+  double level(int j) const noexcept {
+    return (j >= 1 && j <= n_) ? levels_[j - 1] : 0.0;
+  }
+  //! Canonical boundary b_j = u_j/(1+δ) for j = 1..n: level j is (b_j, b_{j+1}], 0 is [0, b_1].
+  double lower_boundary(int j) const noexcept { return level(j) / one_plus_delta_; }
+
+  //! Q_log(u) for |u| ≤ u_s (above u_s it stays on the top level u_n; the composite switches
+  //! to Q_uni there). Exactly odd: works on |u| and restores the sign.
+  double quantize_log(double u) const noexcept {
+    if (n_ == 0 || std::isnan(u)) return u;
+    const double a = std::fabs(u);
+    if (a <= lower_boundary(1)) return 0.0;  // dead zone |u| ≤ u_min/(1+δ)
+    // spec §A.3 index formula, clamped in floating point before the cast (no overflow UB)
+    const double jd = std::ceil((std::log(a) + log_offset_) * inv_log_inv_rho_);
+    int j = jd <= 1.0 ? 1 : (jd >= n_ ? n_ : static_cast<int>(jd));
+    // Snap to (b_j, b_{j+1}]: fixes ln() rounding across an integer at a boundary. Bounded by n.
+    while (j < n_ && a > lower_boundary(j + 1)) ++j;
+    while (j > 1 && !(a > lower_boundary(j))) --j;
+    return std::copysign(levels_[j - 1], u);
+  }
+
+  //! Q_uni(u) = σ floor(u/σ + 1e-12) (spec §A.3 [A]); the 1e-12 keeps exact multiples of σ on
+  //! their own level. Error ∈ (−σ, 1e-12σ].
+  double quantize_uniform(double u) const noexcept {
+    if (n_ == 0) return u;
+    const double x = u / p_.sigma;
+    // For |x| ≥ 2^50 the grid is at most 4 ulp(u) wide: u itself is the best representable
+    // level (error 0 ≤ σ). ±inf and NaN also pass through here.
+    if (!(std::fabs(x) < 0x1p50)) return u;
+    const double m = std::floor(x + 1e-12);
+    double q = p_.sigma * m;
+    // Rounding of u/σ and σ·m can leave u − q a few ulp(u) above σ when |u| ≫ σ (never within
+    // the saturated range); step one level up so that the bound σ holds as computed.
+    if (u - q > p_.sigma) q = p_.sigma * (m + 1.0);
+    return q;
+  }
+
+  //! Q_i(u) (spec §A.3): log for |u| ≤ u_s, uniform above.
+  double quantize(double u) const noexcept {
+    return std::fabs(u) <= p_.u_s ? quantize_log(u) : quantize_uniform(u);
+  }
+
+ private:
+  QuantizerChannelParams p_;
+  std::array<double, kMaxQuantizerLevels> levels_{};
+  double delta_ = 0.0;
+  double one_plus_delta_ = 1.0;
+  double log_offset_ = 0.0;
+  double inv_log_inv_rho_ = 0.0;
+  double bound_ = 0.0;
+  int n_ = 0;
+  Status status_ = Status::ok;
+};
+
+//! Parameters of an M-channel quantizer, channel i in the unit of input i.
+template <int M>
+struct CompositeQuantizerParams {
+  std::array<QuantizerChannelParams, M> channel{};
+};
+
+//! Seed 003 channels (3 torques [N m], then 3 forces [N]), spec §A.8 "Proposed Table 1" [A]:
+//! torque ρ 0.3, u_min 1e-3, u_s 0.2, σ 0.1; force ρ 0.5, u_min 1e-3, u_s 2, σ 1.0. With the
+//! actuator limits 0.5 N m / 5 N [P] the limits are exact uniform levels (5σ).
+inline CompositeQuantizerParams<6> seed003_quantizer_params() noexcept {
+  CompositeQuantizerParams<6> p;
+  const QuantizerChannelParams torque{0.3, 1e-3, 0.2, 0.1};
+  const QuantizerChannelParams force{0.5, 1e-3, 2.0, 1.0};
+  for (int i = 0; i < 3; ++i) {
+    p.channel[i] = torque;
+    p.channel[i + 3] = force;
+  }
+  return p;
+}
+
+//! M channels quantized independently, with the transmission count of spec §A.3. A
+//! transmission is a change of a channel's quantized value from the previous apply(); the first
+//! apply() after construction or reset() transmits every channel. reset() clears the counters
+//! and the remembered output.
+template <int M>
+class CompositeQuantizer {
+  static_assert(M >= 1 && M <= 32, "one bit per channel in the transmission mask");
+
+ public:
+  using Params = CompositeQuantizerParams<M>;
+
+  explicit CompositeQuantizer(const Params& p) noexcept {
+    bool ok = true;
+    for (int i = 0; i < M; ++i) {
+      channels_[i] = QuantizerChannel(p.channel[i]);
+      ok = ok && channels_[i].status() == Status::ok;
+    }
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+  }
+
+  Status status() const noexcept { return status_; }
+  const QuantizerChannel& channel(int i) const noexcept {
+    return channels_[i];
+  }
+
+  void reset() noexcept {
+    last_.setZero();
+    have_last_ = false;
+    tx_total_ = 0;
+    tx_channel_.fill(0);
+  }
+
+  //! u_q = Q(u) per channel; counts transmissions. `tx_mask` (optional) gets bit i set when
+  //! channel i transmits this tick. non_finite_input / invalid_parameter: u_q, tx_mask and all
+  //! counters untouched.
+  [[nodiscard]] Status apply(const Vec<M>& u, Vec<M>& u_q,
+                             std::uint32_t* tx_mask = nullptr) noexcept {
+    if (status_ != Status::ok) return status_;
+    if (!all_finite(u)) return Status::non_finite_input;
+    std::uint32_t mask = 0;
+    for (int i = 0; i < M; ++i) {
+      const double q = channels_[i].quantize(u(i));
+      // Exact comparison on purpose: equal levels are bit-identical (one table, one formula).
+      if (!have_last_ || q != last_(i)) {
+        mask |= std::uint32_t{1} << i;
+        ++tx_channel_[i];
+        ++tx_total_;
+      }
+      last_(i) = q;
+    }
+    have_last_ = true;
+    u_q = last_;
+    if (tx_mask) *tx_mask = mask;
+    return Status::ok;
+  }
+
+  //! Total transmissions N_tx since construction or reset() (64 bit: 8 Hz × 6 channels would
+  //! wrap 32 bits in under 3 years).
+  std::uint64_t transmissions() const noexcept { return tx_total_; }
+  //! Transmissions per channel.
+  const std::array<std::uint64_t, M>& channel_transmissions() const noexcept { return tx_channel_; }
+  //! The output of the last successful apply() (zero before the first).
+  const Vec<M>& last_output() const noexcept { return last_; }
+
+ private:
+  std::array<QuantizerChannel, M> channels_;
+  Vec<M> last_ = Vec<M>::Zero();
+  std::array<std::uint64_t, M> tx_channel_{};
+  std::uint64_t tx_total_ = 0;
+  bool have_last_ = false;
+  Status status_ = Status::ok;
+};
+
+//! One control tick of spec §A.3 [A]: u_c = clip(Q(sat(u))) with per-channel limits (the
+//! saturate_each encoding: a limit that is not > 0 means none). Saturating BEFORE quantizing
+//! keeps a saturated command on one level, so it is not re-transmitted (−31% transmissions in
+//! the spec's prototype, §C.3). The final clip is a no-op when every limit is an exact level
+//! (seed 003: 0.5 = 5σ, 5 = 5σ); otherwise it maps the one level beyond −limit back onto
+//! −limit, a one-to-one change, so counting Q's changes counts u_c's. Returns saturated when
+//! sat clipped a channel, non_finite_input / invalid_parameter with u_c and counters untouched.
+template <int M>
+[[nodiscard]] Status saturate_then_quantize(const Vec<M>& u, const Vec<M>& limit,
+                                            CompositeQuantizer<M>& q, Vec<M>& u_c,
+                                            std::uint32_t* tx_mask = nullptr) noexcept {
+  if (!all_finite(u)) return Status::non_finite_input;
+  Vec<M> v = u;
+  const int clipped = saturate_each<M>(v, limit);
+  Vec<M> w;
+  const Status s = q.apply(v, w, tx_mask);
+  if (s != Status::ok) return s;
+  saturate_each<M>(w, limit);
+  u_c = w;
+  return clipped > 0 ? Status::saturated : Status::ok;
+}
+
+}  // namespace adcs

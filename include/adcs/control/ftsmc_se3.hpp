@@ -1,0 +1,91 @@
+#pragma once
+// Finite-time (fast terminal) sliding-mode baseline on SE(3), seed 003 §3.2 2) as reconstructed in
+// spec §A.6 (ref. [33] lost; Yu & Man 2002 fast TSM, Lee & Vukovich 2016 SE(3) TSM):
+//
+//   s = η̇ + C1 η + C2 S(η; ε),   η̇ = G ξ_e   (S of exponent r = 1 − p_s, non-singular patch)
+//   ν = −Ġξ_e − G F0 − C1 η̇ − C2 diag(S'(η)) η̇ − K_a s − K_b sig^ρ(s) − k_s tanh(s/φ)
+//   u = Ξ0 G⁻¹ ν
+//
+// No quantization compensation and no adaptation: a pure baseline. The command goes through the
+// same sat → Q → actuator chain as the prescribed-time law.
+#include <cmath>
+
+#include "adcs/control/nonsingular_power.hpp"
+#include "adcs/control/se3_tracking_error.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+//! Gains; channels [rotation x3; translation x3]. Defaults: spec §A.8 "Proposed Table 2" [A]
+//! (the paper's Table 2 was lost).
+struct FtsmcSe3Params {
+  double p_s = 0.5;   //!< [-] S exponent r = 1 − p_s = 0.5
+  double eps = 0.01;  //!< [rad | m] switch of S
+  Vec6 C1 = (Vec6() << 0.05, 0.05, 0.05, 0.03, 0.03, 0.03).finished();  //!< [1/s]
+  Vec6 C2 = (Vec6() << 0.1, 0.1, 0.1, 0.2, 0.2, 0.2).finished();
+  Vec6 K_a = Vec6::Constant(0.5);   //!< [1/s]
+  Vec6 K_b = Vec6::Constant(0.05);
+  double rho = 0.5;                 //!< [-] power of the reaching term
+  double k_s = 0.0;                 //!< switching gain (0 in Table 2)
+  double phi = 0.01;                //!< tanh boundary layer
+};
+
+class FtsmcSe3 {
+ public:
+  using Params = FtsmcSe3Params;
+
+  FtsmcSe3(const Params& p, const Se3SpacecraftParams& nominal) noexcept
+      : p_(p), nominal_(nominal), S_(NonsingularPowerParams{p.p_s, p.eps}) {
+    const bool ok = all_finite(p_.C1) && all_finite(p_.C2) && (p_.K_a.array() >= 0.0).all() &&
+                    (p_.K_b.array() >= 0.0).all() && p_.rho > 0.0 && p_.k_s >= 0.0 && p_.phi > 0.0 &&
+                    nominal_.status() == Status::ok && S_.status() == Status::ok;
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+  }
+
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+  void reset() noexcept { u_.setZero(); }
+  const Vec6& command() const noexcept { return u_; }
+  //! The sliding variable of the last good tick.
+  const Vec6& sliding_variable() const noexcept { return s_; }
+
+  //! One control tick. On non-ok status u holds the last good command.
+  [[nodiscard]] Status step(const Se3SpacecraftState& x, const Se3DesiredState& d, Vec6& u) noexcept {
+    if (status_ != Status::ok) {
+      u = u_;
+      return status_;
+    }
+    Se3TrackingError e;
+    const Status se = se3_tracking_error(x, d, nominal_, e);
+    if (se != Status::ok) {
+      u = u_;
+      return se;
+    }
+    const Vec6 s = e.eta_dot + p_.C1.cwiseProduct(e.eta) + p_.C2.cwiseProduct(S_.value(e.eta));
+    Vec6 reach;
+    for (int i = 0; i < 6; ++i)
+      reach(i) = p_.K_a(i) * s(i) + p_.K_b(i) * sig(s(i), p_.rho) + p_.k_s * std::tanh(s(i) / p_.phi);
+    const Vec6 nu = -e.G_dot_xi_e - e.G * e.F0 - p_.C1.cwiseProduct(e.eta_dot) -
+                    p_.C2.cwiseProduct(S_.derivative(e.eta)).cwiseProduct(e.eta_dot) - reach;
+    const Vec6 u_new = se3_apply_inertia(nominal_.params(), e.G_inv * nu);
+    if (!all_finite(u_new)) {
+      u = u_;
+      return Status::out_of_range;
+    }
+    u_ = u_new;
+    s_ = s;
+    u = u_;
+    return Status::ok;
+  }
+
+ private:
+  Params p_;
+  Se3Spacecraft nominal_;
+  NonsingularPower S_;
+  Status status_ = Status::ok;
+  Vec6 u_ = Vec6::Zero();
+  Vec6 s_ = Vec6::Zero();
+};
+
+}  // namespace adcs

@@ -1,0 +1,121 @@
+#pragma once
+// Signed powers and the C¹ non-singular switching function of the seed 003 backstepping law
+// (§2.3 eqs. (29)–(35), spec §A.5 "Per-channel functions" [R]; also the FTSMC surface, §A.6):
+//
+//   sig^a(z) = sign(z)|z|^a
+//   S(z;ε)   = sig^{1−p}(z)                  |z| > ε
+//            = l1 z + l2 sign(z) z²          |z| ≤ ε,   l1 = (1+p)ε^{−p},  l2 = −p ε^{−1−p}
+//   S'(z;ε)  = (1−p)|z|^{−p}                 |z| > ε
+//            = l1 + 2 l2 |z|                 |z| ≤ ε
+//
+// sig^{1−p} alone has an infinite slope at 0, so its time derivative (needed in α̇) blows up as
+// z → 0; the quadratic patch matches value and slope at |z| = ε (S(ε) = ε^{1−p},
+// S'(ε) = (1−p)ε^{−p}), so S is C¹ and S'(0) = l1 is finite. S is odd and S' even, exactly:
+// both are evaluated on |z| and the sign restored.
+#include <cmath>
+
+#include "adcs/core/failure_hook.hpp"
+#include "adcs/core/status.hpp"
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+namespace detail {
+//! |x|^a for x ≥ 0. For a = 0.5, 1, 2 the cheap forms sqrt(x), x, x·x are the correctly rounded
+//! |x|^a (IEEE 754), the result an exact pow gives; other exponents stay with std::pow, e.g.
+//! 1.5 as x·sqrt(x) would round twice.
+inline double abs_pow(double x, double a) noexcept {
+  if (a == 0.5) return std::sqrt(x);  // p = 0.5 of seed 003 (spec §A.8): sig^{1−p}
+  if (a == 1.0) return x;
+  if (a == 2.0) return x * x;
+  return std::pow(x, a);
+}
+}  // namespace detail
+
+//! sig^a(z) = sign(z)|z|^a with sign(0) = 0, so sig^a(0) = 0 for every a (a > 0 expected).
+inline double sig(double z, double a) noexcept {
+  if (z == 0.0) return 0.0;
+  return std::copysign(detail::abs_pow(std::fabs(z), a), z);
+}
+
+//! sig^a applied componentwise.
+template <int M>
+Vec<M> sig(const Vec<M>& z, double a) noexcept {
+  Vec<M> out;
+  for (int i = 0; i < M; ++i) out(i) = sig(z(i), a);
+  return out;
+}
+
+struct NonsingularPowerParams {
+  double p = 0.5;     //!< [-] power p ∈ (0,1); S ~ sig^{1−p} outside the patch (spec §A.8 [A])
+  double eps = 0.01;  //!< [z units: rad, m, rad/s, m/s] patch half-width ε > 0 (spec §A.8 [A])
+};
+
+//! True when 0 < p < 1 and ε > 0 (both finite), the domain where S is C¹ and l1, l2 are finite.
+inline bool valid(const NonsingularPowerParams& q) noexcept {
+  return std::isfinite(q.p) && std::isfinite(q.eps) && q.p > 0.0 && q.p < 1.0 && q.eps > 0.0;
+}
+
+//! S(z;ε) and S'(z;ε) for one (p, ε), with l1, l2 computed once at construction. With invalid
+//! parameters status() is invalid_parameter and value()/derivative() return 0 (a controller
+//! term that vanishes instead of a non-finite one); check status() after construction. A
+//! non-finite z gives a non-finite result: callers check their inputs.
+class NonsingularPower {
+ public:
+  explicit NonsingularPower(const NonsingularPowerParams& q = NonsingularPowerParams{}) noexcept
+      : q_(q) {
+    if (!ADCS_CHECK(valid(q_), "NonsingularPower: need p in (0,1), eps > 0")) {
+      status_ = Status::invalid_parameter;
+      return;
+    }
+    one_minus_p_ = 1.0 - q_.p;
+    l1_ = (1.0 + q_.p) * std::pow(q_.eps, -q_.p);       // spec §A.5
+    l2_ = -q_.p * std::pow(q_.eps, -1.0 - q_.p);        // spec §A.5
+  }
+
+  Status status() const noexcept { return status_; }
+  const NonsingularPowerParams& params() const noexcept { return q_; }
+  double l1() const noexcept { return l1_; }  //!< [z^{−p}] slope of S at 0, S'(0)
+  double l2() const noexcept { return l2_; }  //!< [z^{−1−p}] quadratic coefficient of the patch
+
+  //! S(z;ε). The patch is written z (l1 + l2|z|) = l1 z + l2 sign(z) z².
+  double value(double z) const noexcept {
+    if (status_ != Status::ok) return 0.0;
+    const double a = std::fabs(z);
+    if (a > q_.eps) return std::copysign(detail::abs_pow(a, one_minus_p_), z);
+    return z * (l1_ + l2_ * a);
+  }
+
+  //! S'(z;ε) = dS/dz. (1−p)|z|^{−p} keeps std::pow: 1/sqrt would round twice.
+  double derivative(double z) const noexcept {
+    if (status_ != Status::ok) return 0.0;
+    const double a = std::fabs(z);
+    if (a > q_.eps) return one_minus_p_ * std::pow(a, -q_.p);
+    return l1_ + 2.0 * l2_ * a;
+  }
+
+  //! S applied componentwise.
+  template <int M>
+  Vec<M> value(const Vec<M>& z) const noexcept {
+    Vec<M> out;
+    for (int i = 0; i < M; ++i) out(i) = value(z(i));
+    return out;
+  }
+
+  //! S' applied componentwise (the diagonal of ∂S(z)/∂z).
+  template <int M>
+  Vec<M> derivative(const Vec<M>& z) const noexcept {
+    Vec<M> out;
+    for (int i = 0; i < M; ++i) out(i) = derivative(z(i));
+    return out;
+  }
+
+ private:
+  NonsingularPowerParams q_;
+  double one_minus_p_ = 1.0;
+  double l1_ = 0.0;
+  double l2_ = 0.0;
+  Status status_ = Status::ok;
+};
+
+}  // namespace adcs
