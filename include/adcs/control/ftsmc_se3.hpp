@@ -52,12 +52,8 @@ class FtsmcSe3 {
 
   //! One control tick. On non-ok status u holds the last good command.
   [[nodiscard]] Status step(const Se3SpacecraftState& x, const Se3DesiredState& d, Vec6& u) noexcept {
-    if (status_ != Status::ok) {
-      u = u_;
-      return status_;
-    }
     Se3TrackingError e;
-    const Status se = se3_tracking_error(x, d, nominal_, e);
+    const Status se = se3_law_error(status_, x, d, nominal_, e);
     if (se != Status::ok) {
       u = u_;
       return se;

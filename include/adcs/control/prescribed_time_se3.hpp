@@ -93,12 +93,8 @@ class PrescribedTimeSe3 {
   //! One control tick: u from the chaser state x and the desired state d, then ψ̂ ← ψ̂ + h ψ̂̇.
   //! On non-ok status u holds the last good command and ψ̂ is unchanged.
   [[nodiscard]] Status step(const Se3SpacecraftState& x, const Se3DesiredState& d, Vec6& u) noexcept {
-    if (status_ != Status::ok) {
-      u = u_;
-      return status_;
-    }
     Se3TrackingError e;
-    const Status se = se3_tracking_error(x, d, nominal_, e);
+    const Status se = se3_law_error(status_, x, d, nominal_, e);
     if (se != Status::ok) {
       u = u_;
       return se;
@@ -120,7 +116,7 @@ class PrescribedTimeSe3 {
       shaping(i) = p_.Lambda2(i) * S2_.value(t.z2(i)) + p_.Upsilon2(i) * sig(t.z2(i), 1.0 + p_.p);
     const Vec6 v1 = -e.G_dot_xi_e - e.G * e.F0 + alpha_dot - p_.K3.cwiseProduct(t.z2) - c * shaping;
     t.u1 = se3_apply_inertia(nominal_.params(), e.G_inv * v1);
-    const Vec6 b = inverse_inertia(e.G.transpose() * t.z2);  // Ξ0⁻¹ Gᵀ z2
+    const Vec6 b = se3_apply_inverse_inertia(nominal_, e.G.transpose() * t.z2);  // Ξ0⁻¹ Gᵀ z2
     for (int i = 0; i < 6; ++i) t.u2(i) = -p_.zeta(i) * std::tanh(p_.zeta(i) * b(i) / p_.eps_q);
     const double two_a2 = 2.0 * p_.a * p_.a;
     t.u3 = -(psi_hat_ / two_a2) * se3_apply_inertia(nominal_.params(), e.G_inv * t.z2);
@@ -141,11 +137,6 @@ class PrescribedTimeSe3 {
 
  private:
   static constexpr double kPi = 3.14159265358979323846;
-  Vec6 inverse_inertia(const Vec6& y) const noexcept {
-    Vec6 x;
-    x << nominal_.J_inv() * y.head<3>(), y.tail<3>() / nominal_.params().m;
-    return x;
-  }
 
   Params p_;
   Se3Spacecraft nominal_;

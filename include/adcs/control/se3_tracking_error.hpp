@@ -66,11 +66,26 @@ struct Se3TrackingError {
   return Status::ok;
 }
 
+//! The tracking error for a law's step: the law's own status first (a rejected law computes
+//! nothing), then se3_tracking_error.
+[[nodiscard]] inline Status se3_law_error(Status law_status, const Se3SpacecraftState& x, const Se3DesiredState& d,
+                                          const Se3Spacecraft& nominal, Se3TrackingError& out) noexcept {
+  if (law_status != Status::ok) return law_status;
+  return se3_tracking_error(x, d, nominal, out);
+}
+
 //! Ξ0 x for Ξ0 = diag(J0, m0 I3).
 inline Vec6 se3_apply_inertia(const Se3SpacecraftParams& p, const Vec6& x) noexcept {
   Vec6 y;
   y << p.J_B * x.head<3>(), p.m * x.tail<3>();
   return y;
+}
+
+//! Ξ0⁻¹ y for Ξ0 = diag(J0, m0 I3), with the model's J0⁻¹.
+inline Vec6 se3_apply_inverse_inertia(const Se3Spacecraft& model, const Vec6& y) noexcept {
+  Vec6 x;
+  x << model.J_inv() * y.head<3>(), y.tail<3>() / model.params().m;
+  return x;
 }
 
 }  // namespace adcs

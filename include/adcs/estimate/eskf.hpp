@@ -217,8 +217,8 @@ class Eskf {
     return out;
   }
 
-  //! K = PCt S_y⁻¹ from the Cholesky factor L (lower triangle of LLT): K Lᵀ... solved row-wise,
-  //! K L Lᵀ = PCt, i.e. forward substitution on the columns of Z = K L, then back substitution.
+  //! K = PCt S_y⁻¹ from the Cholesky factor L of S_y = L Lᵀ (lower triangle of the LLT): solve
+  //! Z Lᵀ = PCt for Z = K L column by column (increasing), then K L = Z (decreasing).
   static Mat<N, NY> solve_gain(const Mat<NY, NY>& L, const Mat<N, NY>& PCt) noexcept {
     Mat<N, NY> Z = PCt;  // Z Lᵀ = PCt  →  columns in increasing order
     for (int m = 0; m < NY; ++m) {
