@@ -21,6 +21,8 @@ std::unique_ptr<Scenario> make_flexible_atc_halfgain();
 std::unique_ptr<Scenario> make_dragfree_estimators();
 std::unique_ptr<Scenario> make_dragfree_adrc();
 std::unique_ptr<Scenario> make_dragfree_pid();
+std::unique_ptr<Scenario> make_se3_ptc();
+std::unique_ptr<Scenario> make_se3_ftsmc();
 
 namespace {
 
@@ -40,6 +42,8 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_dragfree_estimators());
   v.push_back(make_dragfree_adrc());
   v.push_back(make_dragfree_pid());
+  v.push_back(make_se3_ptc());
+  v.push_back(make_se3_ftsmc());
   return v;
 }
 
