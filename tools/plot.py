@@ -16,6 +16,7 @@ Plot spec keys (all but "file" optional):
   ylabel   y label
   logy     log y axis;  logx: log x axis
   kind     "psd": log-log axes (spectra); x/y usually come from "csv"
+           "points": markers only, no lines (sparse columns, NaN where there is no event)
   csv      read columns from this other CSV in OUT_DIR instead of the scenario's CSV
   fill     [["lo_col", "hi_col"], ...] shaded bands (e.g. prescribed-performance funnels);
            an entry may also be {"lo": ..., "hi": ..., "label": ...}
@@ -330,8 +331,11 @@ def draw(spec, table, out_path, where):
         if logy:
             y = np.where(y > 0, y, np.nan)
         ci = k + nfill  # beyond 10 curves the colours repeat: vary the line style
-        ax.plot(x, y, lw=1.2, color=f"C{ci % 10}", ls=("-", "--", ":", "-.")[(ci // 10) % 4],
-                label=col)
+        if spec.get("kind") == "points":
+            ax.plot(x, y, ls="none", marker=".", ms=3, color=f"C{ci % 10}", label=col)
+        else:
+            ax.plot(x, y, lw=1.2, color=f"C{ci % 10}", ls=("-", "--", ":", "-.")[(ci // 10) % 4],
+                    label=col)
         n_items += 1
         n_data += 1
     if n_data == 0:

@@ -23,6 +23,7 @@ std::unique_ptr<Scenario> make_dragfree_adrc();
 std::unique_ptr<Scenario> make_dragfree_pid();
 std::unique_ptr<Scenario> make_se3_ptc();
 std::unique_ptr<Scenario> make_se3_ftsmc();
+std::unique_ptr<Scenario> make_se3_campaign();
 
 namespace {
 
@@ -44,6 +45,7 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_dragfree_pid());
   v.push_back(make_se3_ptc());
   v.push_back(make_se3_ftsmc());
+  v.push_back(make_se3_campaign());
   return v;
 }
 

@@ -40,7 +40,7 @@ struct PlotSpec {
   std::vector<std::pair<std::string, std::string>> fill = {};
   //! Read the columns from this extra table (RunResult::tables) instead of the time series.
   std::string csv = {};
-  //! "psd": log-log axes for spectra; empty: linear (or logy).
+  //! "psd": log-log axes for spectra; "points": markers only (sparse event columns); empty: lines.
   std::string kind = {};
   //! Horizontal reference lines (value, label), e.g. a requirement.
   std::vector<std::pair<double, std::string>> hline = {};

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -81,19 +82,70 @@ TEST(Se3Scenarios, EveryInitialStateSettlesBeforeTItems6And14) {
   RecordProperty("settle_pos_spread_s", std::to_string(*hi - *lo));
 }
 
-TEST(Se3Scenarios, PrescribedTimeSweepItem7) {
-  const double Ts[4] = {80.0, 100.0, 120.0, 140.0};
-  const double proto[4] = {46.5, 51.0, 57.1, 62.8};
+// se3-campaign: the multi-run claims (6, 7, 11, 12) from one fixed gain set, on the same closed
+// loop as the single runs (bit-identical metrics), with the T sweep and the FTSMC per state.
+TEST(Se3Scenarios, CampaignItems6To7And11To12) {
+  const RunResult c = run("se3-campaign");
+  const RunResult& p1 = ptc_state1();
+  EXPECT_EQ(metric(c, "settle_pos_s_ptc_s1"), metric(p1, "settle_pos_s"));
+  EXPECT_EQ(metric(c, "settle_att_s_ptc_s1"), metric(p1, "settle_att_s"));
+  EXPECT_EQ(metric(c, "transmissions_ptc_s1"), metric(p1, "transmissions"));
+  // 6: every state before T = 120 s, within ±10 s of PROTO.
+  const double proto_states[4] = {57.1, 74.8, 86.5, 116.4};
+  for (int s = 1; s <= 4; ++s) {
+    const double ts = metric(c, "settle_pos_s_ptc_s" + std::to_string(s));
+    EXPECT_LT(ts, 120.0) << "state " << s;
+    EXPECT_NEAR(ts, proto_states[s - 1], 10.0) << "state " << s;
+    EXPECT_EQ(metric(c, "nonok_steps_ptc_s" + std::to_string(s)), 0.0);
+    EXPECT_EQ(metric(c, "nonok_steps_ftsmc_s" + std::to_string(s)), 0.0);
+  }
+  // 7: T sweep (state 1): each below its T, strictly increasing, within ±10 s of PROTO.
+  const char* Ts[4] = {"80", "100", "120", "140"};
+  const double T[4] = {80.0, 100.0, 120.0, 140.0}, proto_T[4] = {46.5, 51.0, 57.1, 62.8};
   double previous = 0.0;
   for (int i = 0; i < 4; ++i) {
-    const RunResult r = Ts[i] == 120.0 ? ptc_state1() : run("se3-ptc", {{"T_s", std::to_string(Ts[i])}});
-    const double ts = metric(r, "settle_pos_s");
-    EXPECT_LT(ts, Ts[i]) << "T = " << Ts[i];
-    EXPECT_GT(ts, previous) << "T = " << Ts[i] << ": t_s(beta) must increase with T";
-    EXPECT_NEAR(ts, proto[i], 10.0) << "T = " << Ts[i];
+    const double ts = metric(c, std::string("settle_pos_s_ptc_T") + Ts[i]);
+    EXPECT_LT(ts, T[i]) << "T = " << T[i];
+    EXPECT_GT(ts, previous) << "T = " << T[i] << ": t_s(beta) must increase with T";
+    EXPECT_NEAR(ts, proto_T[i], 10.0) << "T = " << T[i];
     previous = ts;
-    expect_claims_hold(r);
   }
+  EXPECT_EQ(metric(c, "settle_pos_s_ptc_T120"), metric(c, "settle_pos_s_ptc_s1"));  // shared run
+  // 12: FTSMC no later than the BsPdTC from state 1; its state-4 time is informational (PROTO 105.8 s,
+  // paper 127.6 s: the "> 120 s" is not reproduced), as is the spread (11; PROTO 59 s).
+  EXPECT_LE(metric(c, "settle_pos_s_ftsmc_s1"), metric(c, "settle_pos_s_ptc_s1"));
+  EXPECT_NEAR(metric(c, "settle_pos_s_ftsmc_s4"), 105.8, 10.0);
+  EXPECT_NEAR(metric(c, "settle_pos_spread_ptc_s"), 59.0, 10.0);
+  RecordProperty("ftsmc_state4_settle_pos_s", std::to_string(metric(c, "settle_pos_s_ftsmc_s4")));
+  int gated = 0;
+  for (const auto& claim : c.claims) gated += claim.holds.has_value() ? 1 : 0;
+  EXPECT_EQ(gated, 4 + 1 + 1 + 1);  // 6 (x4), 7, 12 first part, the no-failure check
+  expect_claims_hold(c);
+}
+
+// Figs 8-9: the dwell table has, per channel, one entry per constant interval of u_c; the
+// intervals tile the run and there is one per transmission (a transmission starts an interval).
+TEST(Se3Scenarios, DwellTableTilesTheRunItem9) {
+  const RunResult& r = ptc_state1();
+  const adcs::sim::Table* dwell = nullptr;
+  for (const auto& t : r.tables)
+    if (t.file == "se3-ptc-dwell.csv") dwell = &t;
+  ASSERT_NE(dwell, nullptr);
+  ASSERT_EQ(dwell->names.size(), 7u);
+  double intervals = 0.0;
+  for (std::size_t ch = 1; ch < 7; ++ch) {
+    double total = 0.0;
+    for (double d : dwell->columns[ch])
+      if (!std::isnan(d)) {
+        EXPECT_GE(d, 0.125);
+        total += d;
+        intervals += 1.0;
+      }
+    EXPECT_DOUBLE_EQ(total, 200.0) << dwell->names[ch];
+  }
+  EXPECT_EQ(intervals, metric(r, "transmissions"));
+  // Spec A.9 #9 (informational): PROTO 3.0-5.9 s torque, 13.8-24.9 s force before 60 s.
+  EXPECT_GT(metric(r, "max_dwell_force_s"), metric(r, "max_dwell_torque_s"));
 }
 
 TEST(Se3Scenarios, FtsmcSettlesNoLaterThanPtcItem12) {
