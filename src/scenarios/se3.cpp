@@ -233,8 +233,9 @@ class Se3Scenario final : public Scenario {
                         o.torque_max <= cfg.sp.M_max && o.force_max <= cfg.sp.F_max && o.nonok == 0});
     r.claims.push_back(
         {"paper", "A.9-9 dwell times of u_c (Figs 8-9, informational)",
-         "paper ~7 s torque, ~10 s force (t < 60 s), steady dwell mostly > one period; proto 3.0-5.9 s torque, "
-         "13.8-24.9 s force, 39-55% of steady intervals > 1 tick, mean 0.3-0.5 s",
+         law_ == Law::ptc ? "paper ~7 s torque, ~10 s force (t < 60 s), steady dwell mostly > one period; proto "
+                            "3.0-5.9 s torque, 13.8-24.9 s force, 39-55% of steady intervals > 1 tick, mean 0.3-0.5 s"
+                          : "paper and proto give the BsPdTC only; the FTSMC's for comparison",
          fmt("max dwell (t < 60 s) %.3g s torque, %.3g s force; steady (t >= 100 s) %.0f%% of intervals > 1 tick, "
              "mean %.3g s",
              dw.max_torque_s, dw.max_force_s, 100.0 * dw.steady_share_multi, dw.steady_mean_s),
