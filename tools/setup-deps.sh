@@ -20,6 +20,11 @@ pkgs=(
   gcc-arm-none-eabi            # Cortex-M7 compile check of every public header
   libnewlib-arm-none-eabi
   libstdc++-arm-none-eabi-newlib
+  qemu-system-arm              # runs the Cortex-M7 replay programs (mps2-an500) from ctest
+  clang-14                     # libFuzzer harnesses (-fsanitize=fuzzer)
+  libclang-rt-14-dev           #   and its runtime
+  gcovr                        # coverage preset (lines of include/adcs)
+  valgrind                     # callgrind instruction counts per step (tools/callgrind-counts.sh)
 )
 
 missing=()
