@@ -3,11 +3,15 @@
 //   flexible-ppc / flexible-atc                    PPATC (eq. (12)) / the ATC comparison law
 //   flexible-ppc-halfgain / flexible-atc-halfgain  the same with K, τ_w, τ_μ halved (B.4 #24);
 //                                                  they also run the nominal gains for Figs. 9-11
+//   flexible-fault-sensor-dropout                  PPATC with the rate measurement NaN for 2 s
+//                                                  from t = 50 s (issue 7, ours): step() rejects
+//                                                  the samples, the last good torque is held
 // Truth plant plant/flexible_spacecraft.hpp (22 states) by RK4; the controller is a discrete
 // object at control_period_s (default 1e-4 s, spec §B.5) with zero-order hold.
 // Every parameter the paper does not give is declared with "assumed (spec B.5)".
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -15,6 +19,7 @@
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/status_counts.hpp"
 #include "sim/recorder.hpp"
 #include "sim/rk4_integrator.hpp"
 #include "sim/sampled_data.hpp"
@@ -50,15 +55,17 @@ struct CompanionTrace {
 
 class FlexibleScenario final : public Scenario {
  public:
-  FlexibleScenario(bool ppc, bool halfgain) : ppc_(ppc), half_(halfgain) {}
+  FlexibleScenario(bool ppc, bool halfgain, bool dropout = false) : ppc_(ppc), half_(halfgain), dropout_(dropout) {}
 
   std::string name() const override {
+    if (dropout_) return "flexible-fault-sensor-dropout";
     return std::string("flexible-") + (ppc_ ? "ppc" : "atc") + (half_ ? "-halfgain" : "");
   }
   std::string description() const override {
     return std::string("seed 002: flexible spacecraft (2 panels x 4 modes), ") +
            (ppc_ ? "prescribed-performance adaptive RBF law PPATC (eq. 12)" : "adaptive RBF law ATC (comparison)") +
-           (half_ ? ", K, tau_w, tau_mu halved" : "") + ", 100 s";
+           (half_ ? ", K, tau_w, tau_mu halved" : "") + ", 100 s" +
+           (dropout_ ? "; fault: rate measurement NaN for 2 s from t = 50 s (ours)" : "");
   }
 
   void declare(ParamSet& p) const override {
@@ -102,6 +109,10 @@ class FlexibleScenario final : public Scenario {
     p.number("record_every", 100, "samples", "CSV decimation (in control samples)");
     if (half_)
       p.name("companion", "run", {"run", "skip"}, "run: also simulate the nominal gains (P7, Figs. 9-11)");
+    if (dropout_) {
+      p.number("dropout_start_s", 50.0, "s", "ours: in steady tracking, the funnel at rho_inf");
+      p.number("dropout_duration_s", 2.0, "s", "issue 7: the rate measurement is NaN for 2 s");
+    }
   }
 
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
@@ -149,6 +160,29 @@ class FlexibleScenario final : public Scenario {
 
  private:
   static constexpr const char* kAxis[3] = {"x", "y", "z"};
+
+  //! Dropout: the samples with a NaN rate are rejected (non_finite_input, torque held, estimates
+  //! untouched); the attitude must stay bounded and every command finite.
+  void dropout_results(RunResult& r, const ParamSet& p, double err_after, long violations_after,
+                       long nonfinite_cmd, const StatusCounts& statuses, double rho_inf) const {
+    const long dropped = statuses.count(Status::non_finite_input);
+    const double expected = std::round(p.get_number("dropout_duration_s") / p.get_number("control_period_s"));
+    r.metrics.push_back({"att_err_max_rad", err_after});
+    r.metrics.push_back({"funnel_violations_after_fault", double(violations_after)});
+    r.metrics.push_back({"nonfinite_commands", double(nonfinite_cmd)});
+    statuses.to_metrics(r);
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "max |e_i| %.3g rad (%.3g deg) from the dropout on; %ld funnel violations",
+                  err_after, err_after * 180.0 / 3.14159265358979323846, violations_after);
+    r.claims.push_back({"check", "attitude stays bounded through a 2 s rate dropout (torque held)",
+                        "max |e_i| after the dropout start <= rho_inf (the funnel's steady width)", buf,
+                        err_after <= rho_inf});
+    r.claims.push_back({"check", "every dropped sample is rejected, never a non-finite command",
+                        "non_finite_input on each of the " + format_number(expected) + " NaN samples; 0 non-finite commands",
+                        std::to_string(dropped) + " rejected, " + std::to_string(nonfinite_cmd) +
+                            " non-finite; statuses: " + statuses.summary(),
+                        double(dropped) == expected && nonfinite_cmd == 0});
+  }
 
   RunResult simulate(const ParamSet& p, const RunContext& ctx, const CompanionTrace* overlay,
                      CompanionTrace* capture) const {
@@ -233,6 +267,14 @@ class FlexibleScenario final : public Scenario {
     double torque_peak = 0, torque_late = 0, eta_max = 0, eta_late = 0, margin_min = INFINITY;
     double p3_dev = 0, mu_min = INFINITY;
     long violations = 0, crossings = 0, ctrl_flags = 0, nonok = 0;
+    // Sensor dropout (flexible-fault-sensor-dropout only): ω measured as NaN on [t0, t1).
+    const double drop0 = dropout_ ? p.get_number("dropout_start_s") : INFINITY;
+    const double drop1 = dropout_ ? drop0 + p.get_number("dropout_duration_s") : INFINITY;
+    if (dropout_ && !(drop0 >= 0.0 && drop1 >= drop0))
+      throw ParamError("dropout_start_s and dropout_duration_s must be >= 0");
+    StatusCounts statuses;
+    long nonfinite_cmd = 0, violations_after = 0;
+    double err_after_rad = 0.0;
     std::size_t sample = 0;
     Vec3 e_final = Vec3::Zero();
     EulerTrackingCommand cmd;
@@ -243,7 +285,10 @@ class FlexibleScenario final : public Scenario {
       m.t = t;
       m.angles = Plant::angles(xs);
       m.omega_BN_B = Plant::omega_BN_B(xs);
+      if (t >= drop0 && t < drop1) m.omega_BN_B.setConstant(std::numeric_limits<double>::quiet_NaN());
       const Status s = ppc_ ? ppc->step(m, ref.sample(t), cmd) : atc->step(m, ref.sample(t), cmd);
+      statuses.add(s);
+      if (!all_finite(cmd.torque_B)) ++nonfinite_cmd;
       if (s == Status::out_of_range || s == Status::constraint_violated) ++ctrl_flags;
       if (s != Status::ok) ++nonok;
       u = cmd.torque_B;
@@ -268,6 +313,8 @@ class FlexibleScenario final : public Scenario {
         const double margin = ppc_margin(z, b, pp.delta(i));
         margin_min = std::min(margin_min, margin);
         if (!(margin > 0.0)) ++violations;                       // spec §B.6: every sample
+        if (!(margin > 0.0) && t >= drop0) ++violations_after;
+        if (t >= drop0) err_after_rad = std::max(err_after_rad, std::abs(e(i)));
         z_peak(i) = std::max(z_peak(i), static_cast<double>(static_cast<int>(b)) * z);
         if (sample > 0 && ((e(i) > 0) != (e_prev(i) > 0)) && e(i) != 0.0) ++crossings;
         if (t >= window(0) && t <= window(1)) err_ss(i) = std::max(err_ss(i), std::abs(e_deg(i)));
@@ -334,6 +381,10 @@ class FlexibleScenario final : public Scenario {
                  {"mu_hat_min", mu_min},
                  {"controller_flags", double(ctrl_flags)},
                  {"nonok_steps", double(nonok)}};
+    if (dropout_) {
+      dropout_results(r, p, err_after_rad, violations_after, nonfinite_cmd, statuses, rinf.maxCoeff());
+      return r;
+    }
     add_claims(r, err_ss, violations, crossings, margin_min, p3_dev, eta_max, eta_late, torque_peak,
                torque_late, ctrl_flags);
     const std::string nm = name();
@@ -404,7 +455,7 @@ class FlexibleScenario final : public Scenario {
     }
   }
 
-  bool ppc_, half_;
+  bool ppc_, half_, dropout_;
 };
 
 }  // namespace
@@ -413,5 +464,8 @@ std::unique_ptr<Scenario> make_flexible_ppc() { return std::make_unique<Flexible
 std::unique_ptr<Scenario> make_flexible_atc() { return std::make_unique<FlexibleScenario>(false, false); }
 std::unique_ptr<Scenario> make_flexible_ppc_halfgain() { return std::make_unique<FlexibleScenario>(true, true); }
 std::unique_ptr<Scenario> make_flexible_atc_halfgain() { return std::make_unique<FlexibleScenario>(false, true); }
+std::unique_ptr<Scenario> make_flexible_fault_sensor_dropout() {
+  return std::make_unique<FlexibleScenario>(true, false, true);
+}
 
 }  // namespace adcs::sim

@@ -2,6 +2,11 @@
 // tracking the eq. (27) reference under the adaptive MIMO law (control/hybrid_adaptive.hpp).
 //   hybrid-adaptive / hybrid-nonadaptive           A-REF (D1, Ω_w(0) = 0), 800 s, T_c = 1 ms
 //   hybrid-adaptive-bias / hybrid-nonadaptive-bias A-BIAS (Ω_w(0) = 150 rad/s, H_I^n told 0)
+//   hybrid-fault-stuck-gimbal / hybrid-fault-wheel  A-REF with one actuator failed at t = 100 s
+//     (issue 7, ours): a frozen gimbal (its rate stays 0 whatever is commanded) or a lost wheel
+//     (no motor torque; it keeps its momentum, the plant has no bearing friction). FDIR reports
+//     the failure fdir_delay_s later; the controller then steers over the remaining actuators
+//     (HybridAdaptive::set_available). fdir=none shows the same fault without the fallback.
 // Truth plant TP-FULL (momentum form) with σ_d integrated alongside by the same integrator.
 // Every parameter the paper does not give is declared below with "assumed (spec A.5)".
 #include <algorithm>
@@ -13,6 +18,7 @@
 #include "adcs/math/euler.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/status_counts.hpp"
 #include "sim/cvode_integrator.hpp"
 #include "sim/metrics.hpp"
 #include "sim/random.hpp"
@@ -51,24 +57,42 @@ struct BaselineTrace {
 };
 constexpr const char* kPaper = "seed 001 §4";
 
+enum class Fault { none, stuck_gimbal, wheel };
+
 class HybridScenario final : public Scenario {
  public:
   //! flight_rate: A-REF at 10 Hz with the normalized adaptation step (beyond the paper).
-  HybridScenario(bool adaptive, bool bias, bool flight_rate = false)
-      : adaptive_(adaptive), bias_(bias), flight_rate_(flight_rate) {}
+  HybridScenario(bool adaptive, bool bias, bool flight_rate = false, Fault fault = Fault::none)
+      : adaptive_(adaptive), bias_(bias), flight_rate_(flight_rate), fault_(fault) {}
 
   std::string name() const override {
+    if (fault_ == Fault::stuck_gimbal) return "hybrid-fault-stuck-gimbal";
+    if (fault_ == Fault::wheel) return "hybrid-fault-wheel";
     return std::string("hybrid-") + (adaptive_ ? "adaptive" : "nonadaptive") + (bias_ ? "-bias" : "") +
            (flight_rate_ ? "-10hz" : "");
   }
   std::string description() const override {
     return std::string("seed 001 ") + (bias_ ? "A-BIAS" : "A-REF") + ": 4-CMG pyramid + 3 wheels, D1 "
            "deviations, eq. (27) reference, " + (adaptive_ ? "adaptive law (25)-(26)" : "no adaptation") +
-           (flight_rate_ ? ", at 10 Hz with the normalized adaptation step (ours)" : "");
+           (flight_rate_ ? ", at 10 Hz with the normalized adaptation step (ours)" : "") +
+           (fault_ == Fault::stuck_gimbal ? "; fault: one CMG gimbal frozen at t = 100 s, FDIR fallback to the "
+                                            "remaining actuators (ours)"
+            : fault_ == Fault::wheel      ? "; fault: one reaction wheel lost at t = 100 s, FDIR fallback (ours)"
+                                          : "");
   }
 
   void declare(ParamSet& p) const override {
-    p.number("duration_s", 800.0, "s", std::string(kA5) + ": one period of the slowest ω_f");
+    if (fault_ != Fault::none) {
+      p.number("duration_s", 300.0, "s", "ours: 100 s before the fault, 200 s after");
+      p.number("fault_time_s", 100.0, "s", "issue 7: the actuator fails at t = 100 s");
+      p.number("fault_actuator", 1, "-",
+               fault_ == Fault::stuck_gimbal ? "ours: which gimbal freezes (1..4)" : "ours: which wheel is lost (1..3)");
+      p.number("fdir_delay_s", 0.1, "s", "assumed (ours): time from the fault to the FDIR report");
+      p.name("fdir", "mask", {"mask", "none"},
+             "mask: the controller is told and steers over the remaining actuators; none: it is not told");
+    } else {
+      p.number("duration_s", 800.0, "s", std::string(kA5) + ": one period of the slowest ω_f");
+    }
     if (flight_rate_)
       p.number("control_period_s", 0.1, "s", "ours: a flight rate, 10 Hz (the paper's law needs <= 3 ms)");
     else
@@ -100,7 +124,10 @@ class HybridScenario final : public Scenario {
              bias_ ? "spec §A.5 A-BIAS: bias momentum on all wheels" : kA5);
     p.name("H_I_n", bias_ ? "zero" : "nominal", {"nominal", "zero"},
            "controller's H_I^n: nominal model at t = 0, or zero (A-BIAS: unknown bias)");
-    p.vector("window_s", {200.0, 800.0}, "s", std::string(kA5) + ": steady-state window");
+    if (fault_ != Fault::none)
+      p.vector("window_s", {50.0, 100.0}, "s", "ours: steady window before the fault");
+    else
+      p.vector("window_s", {200.0, 800.0}, "s", std::string(kA5) + ": steady-state window");
     p.name("integrator", "rk4", {"rk4", "adams"},
            "rk4: one RK4 step per control period (spec §A.5); adams: CVODE Adams");
     p.number("record_every", flight_rate_ ? 1 : 100, "samples", "CSV decimation (in control samples)");
@@ -110,13 +137,13 @@ class HybridScenario final : public Scenario {
            "explicit_euler: the paper's estimate update (spec A.3 step 13); normalized: ours, "
            "keeps the per-step adaptation gain below max_step_gain (stable at 10 Hz)");
     p.number("max_step_gain", 0.2, "-", "ours: lambda_max of the normalized step");
-    if (adaptive_)
+    if (adaptive_ && fault_ == Fault::none)
       p.name("baseline", "run", {"run", "skip"},
              "run: also simulate alpha_F = alpha_G = 0 for the R5 improvement ratio");
   }
 
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
-    const bool with_baseline = adaptive_ && p.get_name("baseline") == "run" &&
+    const bool with_baseline = adaptive_ && fault_ == Fault::none && p.get_name("baseline") == "run" &&
                                p.get_number("alpha_F") + p.get_number("alpha_G") > 0.0;
     if (!with_baseline) return simulate(p, ctx, nullptr, nullptr);
     // R5 needs the same configuration without adaptation: run it first (no CSV), keep its error
@@ -276,6 +303,27 @@ class HybridScenario final : public Scenario {
     std::vector<double> row;
     const SinusoidalRateReference& ref = sim.ref;
 
+    // Fault injection (fault scenarios only): actuator k_fail stops responding at t_fault; the
+    // FDIR report reaches the controller at t_fdir (never with fdir=none).
+    const bool faulty = fault_ != Fault::none;
+    double t_fault = INFINITY, t_fdir = INFINITY;
+    int k_fail = -1;
+    if (faulty) {
+      const double a = p.get_number("fault_actuator");
+      const int count = fault_ == Fault::stuck_gimbal ? kM : kN;
+      if (!(a >= 1 && a <= count) || a != std::floor(a))
+        throw ParamError("fault_actuator must be an integer in 1.." + std::to_string(count));
+      k_fail = (fault_ == Fault::stuck_gimbal ? 0 : kM) + static_cast<int>(a) - 1;
+      t_fault = p.get_number("fault_time_s");
+      const double delay = p.get_number("fdir_delay_s");
+      if (!(t_fault >= 0.0) || !(delay >= 0.0)) throw ParamError("fault_time_s and fdir_delay_s must be >= 0");
+      if (p.get_name("fdir") == "mask") t_fdir = t_fault + delay;
+    }
+    bool fdir_applied = false;
+    StatusCounts statuses;
+    long nonfinite_cmd = 0;
+    double failed_cmd_after_fdir = 0.0, e_p_after = 0.0, e_rate_after = 0.0, e_p_pre = 0.0;
+
     auto control = [&](double t, const HybridSimPlant::State& xs, HybridSimPlant::Input& u) {
       const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
       Controller::Measurement m;  // perfect measurements (spec §A.5)
@@ -283,12 +331,21 @@ class HybridScenario final : public Scenario {
       m.omega_BN_B = plant.omega_BN_B(xp, u);  // ω with the γ̇ held over the last period
       m.gamma = FullPlant::gamma(xp);
       m.Omega_w = FullPlant::Omega_w(xp);
+      if (faulty && !fdir_applied && t >= t_fdir) {
+        if (ctrl.set_available(all_actuators<kM + kN>() & ~(ActuatorMask{1} << k_fail)) != Status::ok)
+          throw SimError("hybrid fault: actuator mask rejected");
+        fdir_applied = true;
+      }
       const Status s = ctrl.step(m, ref.sample(t, xs.tail<3>()), cmd, &diag);
       if (s != Status::ok) ++nonok;
+      statuses.add(s);
+      if (!all_finite(cmd.u)) ++nonfinite_cmd;
+      if (fdir_applied) failed_cmd_after_fdir = std::max(failed_cmd_after_fdir, std::abs(cmd.u(k_fail)));
       gimbal_rate_peak = std::max(gimbal_rate_peak, cmd.u.head<kM>().cwiseAbs().maxCoeff());
       wheel_accel_peak = std::max(wheel_accel_peak, cmd.u.tail<kN>().cwiseAbs().maxCoeff());
       u = cmd.u;
       if (saturate_each<kM + kN>(u, u_limit) > 0) ++limit_hits;  // spec A.5: flag if hit
+      if (t >= t_fault) u(k_fail) = 0.0;  // frozen gimbal (γ̇ = 0) / lost wheel (no torque)
     };
     auto observe = [&](double t, const HybridSimPlant::State& xs, const HybridSimPlant::Input& u) {
       const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
@@ -312,6 +369,12 @@ class HybridScenario final : public Scenario {
         e_rate_max = std::max(e_rate_max, e_rate);
       }
       if (t >= 100.0) E_H_late_max = std::max(E_H_late_max, E_H);
+      if (t >= t_fault) {
+        e_p_after = std::max(e_p_after, e_p);
+        e_rate_after = std::max(e_rate_after, e_rate);
+      } else if (t >= window(0)) {
+        e_p_pre = std::max(e_p_pre, e_p);
+      }
       E_H_final = E_H;
       for (int i = 0; i < kM; ++i) proj_max = std::max(proj_max, ctrl.theta_cG(i).squaredNorm());
       for (int j = 0; j < kN; ++j) proj_max = std::max(proj_max, ctrl.theta_wG(j).squaredNorm());
@@ -374,6 +437,11 @@ class HybridScenario final : public Scenario {
                  {"gimbal_rate_peak_rad_s", gimbal_rate_peak},
                  {"wheel_accel_peak_rad_s2", wheel_accel_peak},
                  {"actuator_limit_hits", double(limit_hits)}};
+    if (faulty) {
+      fault_results(r, p, k_fail, e_p_pre, e_p_after, e_rate_after, failed_cmd_after_fdir, nonfinite_cmd,
+                    statuses);
+      return r;
+    }
     if ((u_limit.array() > 0.0).any())
       r.claims.push_back({"check", "actuator limits (optional, spec A.5) never reached",
                           "0 samples clipped (PROTO peaks 3.1e-3 rad/s, 8e-6 rad/s^2)",
@@ -402,6 +470,36 @@ class HybridScenario final : public Scenario {
          {"theta_wG_norm2_1", "theta_wG_norm2_2", "theta_wG_norm2_3"}, "[-]", false},
     };
     return r;
+  }
+
+  //! Fault scenarios: bounded attitude after the fault, the failed actuator never commanded after
+  //! the FDIR report, finite commands, and every step() status returned.
+  void fault_results(RunResult& r, const ParamSet& p, int k_fail, double e_pre, double e_after,
+                     double rate_after, double failed_cmd, long nonfinite_cmd, const StatusCounts& statuses) const {
+    const bool fdir = p.get_name("fdir") == "mask";
+    r.metrics.push_back({"att_err_max_rad", e_after});
+    r.metrics.push_back({"att_err_max_pre_fault_rad", e_pre});
+    r.metrics.push_back({"rate_err_max_after_fault_rad_s", rate_after});
+    r.metrics.push_back({"failed_actuator_cmd_max_after_fdir", fdir ? failed_cmd : NAN});
+    r.metrics.push_back({"nonfinite_commands", double(nonfinite_cmd)});
+    statuses.to_metrics(r);
+    const std::string what = (fault_ == Fault::stuck_gimbal ? "gimbal " : "wheel ") +
+                             std::to_string(fault_ == Fault::stuck_gimbal ? k_fail + 1 : k_fail - kM + 1);
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "max principal error %.3g rad after the fault (%.3g rad before), rate %.3g rad/s",
+                  e_after, e_pre, rate_after);
+    // Bounded: within the paper's R3 accuracy (3e-3 rad) with the fallback; informative without.
+    r.claims.push_back({"check", "attitude stays bounded after the failure of " + what +
+                                     (fdir ? " (FDIR fallback)" : " (no FDIR: informative)"),
+                        "max principal error after the fault <= 3e-3 rad (the paper's R3 accuracy)", buf,
+                        fdir ? std::optional<bool>(e_after <= 3e-3) : std::nullopt});
+    if (fdir) {
+      std::snprintf(buf, sizeof buf, "max |u_%d| = %.3g after the report", k_fail + 1, failed_cmd);
+      r.claims.push_back({"check", "the failed actuator is never commanded after the FDIR report",
+                          "exactly 0 (steering over the available actuators)", buf, failed_cmd == 0.0});
+    }
+    r.claims.push_back({"check", "every command finite; step() statuses returned", "0 non-finite commands",
+                        std::to_string(nonfinite_cmd) + " non-finite; statuses: " + statuses.summary(), nonfinite_cmd == 0});
   }
 
   void add_claims(RunResult& r, double e_att, double e_p, double e_rate, double proj, unsigned safeguards,
@@ -449,6 +547,7 @@ class HybridScenario final : public Scenario {
   }
 
   bool adaptive_, bias_, flight_rate_;
+  Fault fault_;
 };
 
 }  // namespace
@@ -458,5 +557,11 @@ std::unique_ptr<Scenario> make_hybrid_nonadaptive() { return std::make_unique<Hy
 std::unique_ptr<Scenario> make_hybrid_adaptive_bias() { return std::make_unique<HybridScenario>(true, true); }
 std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias() { return std::make_unique<HybridScenario>(false, true); }
 std::unique_ptr<Scenario> make_hybrid_adaptive_10hz() { return std::make_unique<HybridScenario>(true, false, true); }
+std::unique_ptr<Scenario> make_hybrid_fault_stuck_gimbal() {
+  return std::make_unique<HybridScenario>(true, false, false, Fault::stuck_gimbal);
+}
+std::unique_ptr<Scenario> make_hybrid_fault_wheel() {
+  return std::make_unique<HybridScenario>(true, false, false, Fault::wheel);
+}
 
 }  // namespace adcs::sim

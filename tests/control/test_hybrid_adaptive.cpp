@@ -362,4 +362,35 @@ TEST(HybridAdaptive, ResetRestoresInitialBehaviourBitForBit) {
   ASSERT_EQ(a.step(m, r, again), Status::ok);
   EXPECT_EQ(std::memcmp(first.u.data(), again.u.data(), sizeof(double) * 7), 0);
 }
+// FDIR fallback: a failed gimbal gets exactly 0 (also in the held command), its Θ̂_G block stops
+// adapting, the others keep tracking; a bad mask is refused and changes nothing.
+TEST(HybridAdaptive, FailedActuatorIsNeverCommandedAndTrackingContinues) {
+  const adcs::VscmgParams<4, 3> pp = adcs::vscmg_params_A_REF();
+  Loop loop(pp, controller_params(), Plant::State::Zero());
+  loop.run(5.0);
+  const adcs::ActuatorMask stuck = adcs::all_actuators<7>() & ~(1u << 2);  // gimbal 3
+  EXPECT_EQ(loop.ctrl.set_available(1u << 9), Status::out_of_range);
+  EXPECT_EQ(loop.ctrl.available(), adcs::all_actuators<7>());
+  ASSERT_EQ(loop.ctrl.set_available(stuck), Status::ok);
+  const Vec6 theta_c3 = loop.ctrl.theta_cG(2);
+  // A rejected step right after the mask holds a command whose failed entry is already 0.
+  Ctrl::Measurement bad;
+  bad.sigma_BN(0) = std::numeric_limits<double>::quiet_NaN();
+  Ctrl::Command held;
+  EXPECT_EQ(loop.ctrl.step(bad, adcs::MrpReferenceSample{}, held), Status::non_finite_input);
+  EXPECT_EQ(held.u(2), 0.0);
+  loop.run(20.0);
+  EXPECT_EQ(loop.nonok, 0);
+  EXPECT_EQ(loop.ctrl.theta_cG(2), theta_c3);  // no regressor for an actuator that never moves
+  Ctrl::Measurement m;
+  m.sigma_BN = Plant::sigma_BN(loop.x);
+  m.omega_BN_B = Plant::omega_BN_B(loop.x);
+  m.gamma = Plant::gamma(loop.x);
+  Ctrl::Command c;
+  ASSERT_EQ(loop.ctrl.step(m, loop.ref.sample(loop.t, loop.sigma_d), c), Status::ok);
+  EXPECT_EQ(c.u(2), 0.0);
+  EXPECT_NE(c.u(3), 0.0);
+  EXPECT_LT(loop.error().head<3>().norm(), 1e-3);  // still tracking on the other six actuators
+}
+
 }  // namespace

@@ -121,7 +121,23 @@ class HybridAdaptive {
     safeguard_count_ = 0;
   }
 
-  //! One control sample. Returns ok; ill_conditioned (singularity-robust steering used);
+  //! Which of the M gimbals (bits 0..M−1) and N wheels (bits M..M+N−1) may be commanded, as
+  //! reported by the caller's FDIR. A failed actuator gets exactly 0 from the next step on and
+  //! the steering spreads v over the others (actuator/steering.hpp, steer_available); its Θ̂_G
+  //! block stops adapting (its regressor is multiplied by u_k = 0). Also updates the held
+  //! command, so a rejected step never re-sends a failed actuator. out_of_range (mask unchanged)
+  //! for bits beyond M+N. Survives reset().
+  [[nodiscard]] Status set_available(ActuatorMask mask) noexcept {
+    if ((mask & ~all_actuators<L>()) != 0u) return Status::out_of_range;
+    available_ = mask;
+    for (int k = 0; k < L; ++k)
+      if (((mask >> k) & 1u) == 0u) last_.u(k) = 0.0;
+    return Status::ok;
+  }
+  ActuatorMask available() const noexcept { return available_; }
+
+  //! One control sample. Returns ok; ill_conditioned (singularity-robust steering used, e.g. the
+  //! available actuators cannot span all three axes);
   //! constraint_violated (the discrete safeguard rescaled an estimate; counted);
   //! non_finite_input / singular / out_of_range / invalid_parameter with `out` = last good
   //! command and every estimate untouched.
@@ -163,7 +179,7 @@ class HybridAdaptive {
     // Step 10: right pseudo-inverse (LDLT of X Xᵀ), singularity-robust fallback.
     Vec<L> u;
     SteeringInfo sinfo;
-    const Status steer_status = steer<L>(X, v, p_.steering, u, &sinfo);
+    const Status steer_status = steer_available<L>(X, v, p_.steering, available_, u, &sinfo);
     if (diag) {
       diag->e = e;
       diag->X = X;
@@ -285,6 +301,7 @@ class HybridAdaptive {
   Mat<3, N> theta_w_ = Mat<3, N>::Zero();
   Command last_{};
   std::uint32_t safeguard_count_ = 0;
+  ActuatorMask available_ = all_actuators<L>();
 };
 
 }  // namespace adcs
