@@ -1,244 +1,105 @@
-// adcs-bench. Run e.g.
-//   build/bench/adcs-bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
-// and read the *_median rows. Inputs vary between iterations so nothing is constant-folded.
+// adcs-bench: per-step latency of every controller and estimator (BM_<Name>_Step), plus math
+// kernels and one whole closed-loop CVODE run. Run e.g.
+//   taskset -c 1 build/bench/adcs-bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+// and read the *_median rows, or let tools/check-budgets.sh compare them with bench/budgets.json.
+//
+// Each BM_<Name>_Step reports
+//   - Time: the mean per step of Google Benchmark's timed loop (no clock call per step);
+//   - step_p50_ns / step_p99_ns: percentiles of 20,000 individually timed steps run after that
+//     loop (steady_clock around each step, minus the median cost of an empty timed region, so
+//     they compare with Time; steps under ~1 µs are timed in batches, step_batch per sample);
+//     the distribution a flight timing budget is about;
+//   - allocs_per_step: operator new calls per step over both passes (must be 0).
+// The step code itself lives in bench/step_fixtures.hpp, shared with adcs-stepcount (callgrind).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
-#include "adcs/adcs.hpp"
+#include "counting_new.hpp"  // tests/nomalloc: counts every operator new (allocs_per_step)
+#include "step_fixtures.hpp"
 #ifdef ADCS_BENCH_HAVE_SIM
 #include "scenarios/registry.hpp"
 #endif
 
 namespace {
 
-adcs::Mat<3, 4> four_wheel_axes() {
-  adcs::Mat<3, 4> G;
-  const double s = 1.0 / std::sqrt(3.0);
-  G << 1, 0, 0, s, 0, 1, 0, s, 0, 0, 1, s;
-  return G;
-}
+using Clock = std::chrono::steady_clock;
+constexpr int kSampledSteps = 20000;
 
-// One MrpPd::step() (the controller of rigid-rw-mrp-pd).
-void BM_MrpPd_Step(benchmark::State& state) {
-  adcs::MrpPdParams<4> p;
-  p.K = 1.44;
-  p.P = adcs::Vec3(36, 32, 28).asDiagonal();
-  p.J_rw_B = adcs::Vec3(900, 800, 600).asDiagonal();
-  p.G_s_B = four_wheel_axes();
-  p.J_s.setConstant(0.05);
-  adcs::MrpPd<4> ctrl(p);
-  adcs::MrpPd<4>::Measurement m;
-  m.sigma_BN << 0.1, -0.2, 0.3;
-  m.omega_BN_B << 0.01, 0.002, -0.003;
-  m.Omega << 10, 20, 30, 40;
-  adcs::AttitudeReference r;
-  r.sigma_RN << 0.1, 0.2, -0.3;
-  adcs::MrpPdCommand out;
-  double k = 0.0;
-  for (auto _ : state) {
-    m.sigma_BN(0) = 0.1 + 1e-9 * k;
-    k += 1.0;
-    benchmark::DoNotOptimize(ctrl.step(m, r, out));
-    benchmark::DoNotOptimize(out.L_r_B.data());
-  }
-}
-BENCHMARK(BM_MrpPd_Step);
-
-// One RwTorqueAllocator::allocate() (precomputed pseudo-inverse + scaling).
-void BM_RwAllocation_Step(benchmark::State& state) {
-  adcs::RwAllocationParams<4> p;
-  p.G_s_B = four_wheel_axes();
-  const adcs::RwTorqueAllocator<4> alloc(p);
-  adcs::Vec3 L(0.05, -0.3, 0.1);
-  adcs::Vec<4> us;
-  for (auto _ : state) {
-    L(0) += 1e-12;
-    benchmark::DoNotOptimize(alloc.allocate(L, us));
-    benchmark::DoNotOptimize(us.data());
-  }
-}
-BENCHMARK(BM_RwAllocation_Step);
-
-// One HybridAdaptive::step() (seed 001, M = 4 CMGs, N = 3 wheels): regressors, steering via
-// LDLT of X X^T, adaptation with projection. Inputs move each iteration.
-void hybrid_adaptive_step(benchmark::State& state, adcs::AdaptationStep adaptation) {
-  adcs::HybridAdaptive<4, 3>::Params p;
-  p.nominal = adcs::pyramid_4cmg_3rw_nominal();
-  p.adaptation_step = adaptation;
-  adcs::HybridAdaptive<4, 3> ctrl(p);
-  adcs::HybridAdaptive<4, 3>::Measurement m;
-  m.sigma_BN << 0.3, -0.2, 0.1;
-  m.omega_BN_B << 0.01, -0.02, 0.015;
-  m.gamma << 0.1, -0.2, 0.15, 0.05;
-  const adcs::SinusoidalRateReference ref;
-  adcs::MrpReferenceSample r = ref.sample(123.0, adcs::Vec3(0.29, -0.21, 0.1));
-  adcs::HybridAdaptive<4, 3>::Command out;
-  double k = 0.0;
-  for (auto _ : state) {
-    m.gamma(0) = 0.1 + 1e-9 * k;
-    k += 1.0;
-    benchmark::DoNotOptimize(ctrl.step(m, r, out));
-    benchmark::DoNotOptimize(out.u.data());
-    if (static_cast<long>(k) % 4096 == 0) ctrl.reset();  // keep the estimates near nominal
-  }
-}
-void BM_HybridAdaptive_Step(benchmark::State& state) {
-  hybrid_adaptive_step(state, adcs::AdaptationStep::explicit_euler);  // the paper's update
-}
-BENCHMARK(BM_HybridAdaptive_Step);
-void BM_HybridAdaptiveNormalized_Step(benchmark::State& state) {
-  hybrid_adaptive_step(state, adcs::AdaptationStep::normalized);  // ours, for 5-20 Hz
-}
-BENCHMARK(BM_HybridAdaptiveNormalized_Step);
-
-// One step of a seed 002 Euler-angle law (PPATC or ATC) on the scenario's initial state, time
-// and angles moving each iteration: kinematics, (funnel transform,) RBF layer, adaptation.
-template <class Law>
-void euler_tracking_step(benchmark::State& state, Law& law) {
-  const adcs::SinusoidalEulerReference ref;
-  typename Law::Measurement m;
-  m.angles = adcs::Vec3(0.25, 0.15, -0.20) * (3.14159265358979 / 180.0);
-  m.omega_BN_B = adcs::Vec3(2e-4, 1e-4, -3e-4);
-  typename Law::Command out;
-  double k = 0.0;
-  for (auto _ : state) {
-    m.t = 1e-9 * k;
-    m.angles(0) += 1e-15;
-    k += 1.0;
-    benchmark::DoNotOptimize(law.step(m, ref.sample(m.t), out));
-    benchmark::DoNotOptimize(out.torque_B.data());
-    if (static_cast<long>(k) % 4096 == 0) law.reset();
-  }
-}
-void BM_FlexiblePPC_Step(benchmark::State& state) {
-  adcs::PpcNeural law({adcs::seed002_tracking_gains(), adcs::seed002_performance()});
-  euler_tracking_step(state, law);
-}
-BENCHMARK(BM_FlexiblePPC_Step);
-void BM_AdaptiveTracking_Step(benchmark::State& state) {
-  adcs::AdaptiveTracking law({adcs::seed002_tracking_gains()});
-  euler_tracking_step(state, law);
-}
-BENCHMARK(BM_AdaptiveTracking_Step);
-
-// Seed 004, one 0.1 s sample. The filters are built from the drag-free model once.
-struct DragFreeBench {
-  adcs::DragFreeParams p;
-  adcs::DragFreeDiscrete d;
-  adcs::DragFreeEskf::Params e1;
-  adcs::SaturatedEsfParams e2[3];
-  DragFreeBench() {
-    if (adcs::drag_free_discretize(p, d) != adcs::Status::ok) std::abort();
-    const adcs::DragFreeNoise n = adcs::drag_free_noise(p);
-    e1.A_d = d.A_d;
-    e1.B_d = d.B_d;
-    e1.B_e = d.B_e;
-    e1.C_d = d.C_d;
-    e1.q.head<6>().setConstant(8.538e-13);
-    e1.S = (n.sigma_F_sc * n.sigma_F_sc) * adcs::Mat<9, 9>::Identity();
-    e1.R = (n.sigma_pos * n.sigma_pos) * adcs::Mat<9, 9>::Identity();
-    for (int j = 0; j < 3; ++j) {
-      adcs::DragFreeAxisModel m;
-      if (adcs::drag_free_axis_model(p, j, m) != adcs::Status::ok) std::abort();
-      e2[j].A_d = m.A_d;
-      e2[j].B_d = m.B_d;
-      e2[j].C = m.C;
-      e2[j].D = m.D;
-      e2[j].q = 8.538e-13;
-      e2[j].S = n.sigma_F_sc * n.sigma_F_sc;
-      e2[j].R_a = n.sigma_acc * n.sigma_acc;
-      e2[j].y_min = p.accel_min;
-      e2[j].y_max = p.accel_max;
+//! Median cost [ns] of an empty timed region (two steady_clock reads), subtracted from samples.
+double clock_overhead_ns() {
+  static const double overhead = [] {
+    std::vector<double> d(4001);
+    for (double& x : d) {
+      const auto t0 = Clock::now();
+      const auto t1 = Clock::now();
+      x = std::chrono::duration<double, std::nano>(t1 - t0).count();
     }
-  }
-};
+    std::nth_element(d.begin(), d.begin() + 2000, d.end());
+    return d[2000];
+  }();
+  return overhead;
+}
 
-void BM_DragFreeEskf_Step(benchmark::State& state) {
-  const DragFreeBench b;
-  adcs::DragFreeEskf f(b.e1);
-  adcs::Vec<9> Y = adcs::Vec<9>::Constant(1e-8), u = adcs::Vec<9>::Zero();
-  for (auto _ : state) {
-    Y(0) += 1e-12;
-    benchmark::DoNotOptimize(f.predict(u));
-    benchmark::DoNotOptimize(f.update(Y));
+//! Google Benchmark's loop over one step, then the per-step sampling pass (see the header).
+//! Steps much shorter than the clock's resolution (~20 ns) are timed in batches of B steps (each
+//! batch ≥ ~1 µs, B in step_batch) and each sample is batch time / B.
+template <class Fixture>
+void BM_Step(benchmark::State& state) {
+  Fixture step;
+  std::vector<double> ns(kSampledSteps);  // allocated before counting starts
+  const double overhead = clock_overhead_ns();
+  const long allocs0 = adcs::test::g_new_calls.load();
+  for (auto _ : state) step();
+  const auto c0 = Clock::now();
+  for (int k = 0; k < 2000; ++k) step();
+  const double mean_ns = std::chrono::duration<double, std::nano>(Clock::now() - c0).count() / 2000.0;
+  const int batch = static_cast<int>(std::clamp(std::ceil(1000.0 / std::max(mean_ns, 1e-3)), 1.0, 1000.0));
+  for (double& x : ns) {
+    const auto t0 = Clock::now();
+    for (int b = 0; b < batch; ++b) step();
+    const auto t1 = Clock::now();
+    x = std::max(0.0, std::chrono::duration<double, std::nano>(t1 - t0).count() - overhead) / batch;
   }
+  const long allocs = adcs::test::g_new_calls.load() - allocs0;
+  auto pct = [&](double q) {
+    const auto k = static_cast<std::size_t>(q * (ns.size() - 1));
+    std::nth_element(ns.begin(), ns.begin() + static_cast<long>(k), ns.end());
+    return ns[k];
+  };
+  state.counters["step_p50_ns"] = pct(0.50);
+  state.counters["step_p99_ns"] = pct(0.99);
+  state.counters["step_batch"] = batch;
+  state.counters["allocs_per_step"] =
+      double(allocs) / double(static_cast<long>(state.iterations()) + 2000 + double(kSampledSteps) * batch);
 }
-BENCHMARK(BM_DragFreeEskf_Step);
 
-void BM_SaturatedEsf_Step(benchmark::State& state) {  // alternating in-range and saturated samples
-  const DragFreeBench b;
-  adcs::SaturatedEsf f(b.e2[0]);
-  long k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(f.predict(0.0));
-    benchmark::DoNotOptimize(f.update((++k & 1) ? 1e-7 : 6e-6, 0.0));
-  }
-}
-BENCHMARK(BM_SaturatedEsf_Step);
+namespace fx = adcs::bench;
+#define ADCS_STEP_BENCHMARK(N) BENCHMARK_TEMPLATE(BM_Step, fx::N##Step)->Name("BM_" #N "_Step")
 
-void BM_DragFreeAdrc_Step(benchmark::State& state) {  // Algorithms 1-3 + ADRC for one sample
-  const DragFreeBench b;
-  adcs::DragFreeEskf a1(b.e1);
-  adcs::SaturatedEsf a2[3] = {adcs::SaturatedEsf(b.e2[0]), adcs::SaturatedEsf(b.e2[1]), adcs::SaturatedEsf(b.e2[2])};
-  adcs::DragFreeAdrc ctrl(adcs::DragFreeAdrcParams{});
-  adcs::Vec<9> Y = adcs::Vec<9>::Constant(1e-8), u = adcs::Vec<9>::Zero();
-  for (auto _ : state) {
-    Y(0) += 1e-12;
-    benchmark::DoNotOptimize(a1.predict(u));
-    for (auto& f : a2) benchmark::DoNotOptimize(f.predict(u(4)));
-    benchmark::DoNotOptimize(a1.update(Y));
-    const adcs::Vec3 F(a2[0].state()(2), a2[1].state()(2), a2[2].state()(2));
-    benchmark::DoNotOptimize(ctrl.step(a1.state(), F, adcs::Vec3::Zero(), u));
-    for (int j = 0; j < 3; ++j) {
-      benchmark::DoNotOptimize(a2[j].update(1e-7, u(3 + j)));
-      benchmark::DoNotOptimize(adcs::fuse_axis(a1, a2[j], j));
-    }
-  }
-}
-BENCHMARK(BM_DragFreeAdrc_Step);
-
-// Seed 003, one 8 Hz command from the chaser and target states (tracking error, G, G⁻¹, Ġξ_e, F0,
-// the law; the target's feed-forward ξ̇_o included), state 1 of the paper.
-struct Se3Bench {
-  adcs::Se3ScenarioParams sp;
-  adcs::Se3Spacecraft target_model{adcs::se3_target_params(sp)};
-  adcs::Se3SpacecraftState target, chaser;
-  Se3Bench() {
-    if (adcs::se3_target_initial_state(sp, target) != adcs::Status::ok) std::abort();
-    chaser = adcs::se3_chaser_initial_state(target, adcs::kSe3InitialPoses[0]);
-  }
-};
-
-template <class Law>
-void se3_step(benchmark::State& state, Law& law) {
-  Se3Bench b;
-  adcs::Vec6 u;
-  for (auto _ : state) {
-    b.chaser.R_N(0) += 1e-9;
-    adcs::Se3DesiredState d;
-    benchmark::DoNotOptimize(adcs::se3_desired_state(b.target_model, b.target, b.sp, d));
-    benchmark::DoNotOptimize(law.step(b.chaser, d, u));
-    benchmark::DoNotOptimize(u.data());
-  }
-}
-void BM_SE3PrescribedTime_Step(benchmark::State& state) {
-  const adcs::Se3ScenarioParams sp;
-  adcs::PrescribedTimeSe3 law(adcs::PrescribedTimeSe3Params{}, adcs::se3_chaser_nominal_params(sp));
-  se3_step(state, law);
-}
-BENCHMARK(BM_SE3PrescribedTime_Step);
-void BM_SE3Ftsmc_Step(benchmark::State& state) {
-  const adcs::Se3ScenarioParams sp;
-  adcs::FtsmcSe3 law(adcs::FtsmcSe3Params{}, adcs::se3_chaser_nominal_params(sp));
-  se3_step(state, law);
-}
-BENCHMARK(BM_SE3Ftsmc_Step);
+ADCS_STEP_BENCHMARK(MrpPd);
+ADCS_STEP_BENCHMARK(RwAllocation);
+ADCS_STEP_BENCHMARK(HybridAdaptive);            // seed 001, the paper's estimate update
+ADCS_STEP_BENCHMARK(HybridAdaptiveNormalized);  // seed 001, ours for 5-20 Hz
+ADCS_STEP_BENCHMARK(FlexiblePPC);               // seed 002 PPATC
+ADCS_STEP_BENCHMARK(AdaptiveTracking);          // seed 002 ATC baseline
+ADCS_STEP_BENCHMARK(DragFreeEskf);              // seed 004 Algorithm 1
+ADCS_STEP_BENCHMARK(SaturatedEsf);              // seed 004 Algorithm 2, one axis
+ADCS_STEP_BENCHMARK(Fusion);                    // seed 004 Algorithm 3, one axis
+ADCS_STEP_BENCHMARK(Adrc);                      // seed 004 ADRC law alone
+ADCS_STEP_BENCHMARK(Pid);                       // seed 004 PID baseline
+ADCS_STEP_BENCHMARK(DragFreeAdrc);              // seed 004 whole sample: Algorithms 1-3 + ADRC
+ADCS_STEP_BENCHMARK(SE3PrescribedTime);         // seed 003 BsPdTC
+ADCS_STEP_BENCHMARK(SE3Ftsmc);                  // seed 003 FTSMC baseline
+ADCS_STEP_BENCHMARK(CompositeQuantizer);        // seed 003 sat + quantizer, 6 channels
 
 // Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
 void BM_Pinv3x4(benchmark::State& state) {
-  adcs::Mat<3, 4> X = four_wheel_axes();
+  adcs::Mat<3, 4> X = fx::four_wheel_axes();
   const adcs::Vec3 v(0.1, 0.2, 0.3);
   adcs::Vec<4> u;
   adcs::PinvInfo info;

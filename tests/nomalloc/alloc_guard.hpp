@@ -4,11 +4,11 @@
 // Eigen::internal::set_is_malloc_allowed). Replacing operator new is the portable way; we do
 // not interpose malloc itself.
 #include <Eigen/Core>
-#include <atomic>
 #include <cstddef>
 
+#include "new_counter.hpp"
+
 namespace adcs::test {
-inline std::atomic<long> g_new_calls{0};
 
 //! Counts allocations inside its scope and forbids Eigen's heap with the runtime check.
 class NoAllocScope {

@@ -12,21 +12,8 @@
 
 #include "adcs/adcs.hpp"
 #include "alloc_guard.hpp"
-
-void* operator new(std::size_t n) {
-  ++adcs::test::g_new_calls;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) {
-  ++adcs::test::g_new_calls;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#include "counting_new.hpp"
+#include "step_fixtures.hpp"  // bench/: the steps adcs-bench times
 
 namespace {
 using adcs::test::NoAllocScope;
@@ -338,6 +325,37 @@ TEST(NoMalloc, PlantDerivativeAndMathKernels) {
   EXPECT_EQ(allocs, 0);
   for (adcs::Status st : s) EXPECT_EQ(st, adcs::Status::ok);
 }
+// Every step adcs-bench times (bench/step_fixtures.hpp: each controller, estimator, the seed 004
+// sample and the quantizer) 100 times with the heap forbidden: the budget checker's
+// allocs_per_step = 0 is proven here with Eigen's runtime check as well.
+template <class Fixture>
+long allocations_of_100_steps() {
+  Fixture step;  // construction may allocate (offline design: expm, Lyapunov, ...)
+  step();
+  NoAllocScope guard;
+  for (int k = 0; k < 100; ++k) step();
+  return guard.allocations();
+}
+
+TEST(NoMalloc, EveryBenchmarkedStep) {
+  namespace fx = adcs::bench;
+  EXPECT_EQ(allocations_of_100_steps<fx::MrpPdStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::RwAllocationStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::HybridAdaptiveStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::HybridAdaptiveNormalizedStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::FlexiblePPCStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::AdaptiveTrackingStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::DragFreeEskfStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::SaturatedEsfStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::FusionStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::AdrcStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::PidStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::DragFreeAdrcStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::SE3PrescribedTimeStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::SE3FtsmcStep>(), 0);
+  EXPECT_EQ(allocations_of_100_steps<fx::CompositeQuantizerStep>(), 0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
