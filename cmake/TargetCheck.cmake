@@ -1,8 +1,14 @@
-# Cortex-M7 compile check: every public header of include/adcs compiled on its own by
-# arm-none-eabi-g++ with flight flags (no exceptions, no RTTI, Eigen heap forbidden), plus one
-# translation unit that instantiates every controller/plant template with concrete sizes (a
-# header alone does not instantiate its templates). Any warning fails.
-# Target: adcs_target_check (not in ALL); ctest test: target_compile_check (label target).
+# Cortex-M7 checks (docs/TARGET.md), target adcs_target_check (not in ALL), ctest label target:
+#  1. compile check: every public header of include/adcs compiled on its own by arm-none-eabi-g++
+#     with flight flags (no exceptions, no RTTI, Eigen heap forbidden), plus one translation unit
+#     that instantiates every controller/plant template with concrete sizes (a header alone does
+#     not instantiate its templates). Any warning fails.
+#  2. replays of the four paper controllers/estimators (tests/target): inputs recorded at build
+#     time from host closed loops, replayed on the host and on QEMU mps2-an500 (separate CMake
+#     project tests/target with cmake/arm-none-eabi.cmake, built into <build>/target), compared
+#     to 1e-12, and instruction counts per step() checked deterministic.
+# ctest: target_compile_check builds adcs_target_check (the fixture adcs_target_build the replay
+# tests require), then target_replay_<name> and target_icount_<name>.
 find_program(ADCS_ARM_CXX arm-none-eabi-g++)
 set(ADCS_ARM_FLAGS
   -mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard -mthumb -O2 -std=c++17
@@ -49,4 +55,113 @@ list(APPEND _outputs ${_gen}/instantiate_all.o)
 add_custom_target(adcs_target_check DEPENDS ${_outputs})
 add_test(NAME target_compile_check
          COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target adcs_target_check)
-set_tests_properties(target_compile_check PROPERTIES LABELS target TIMEOUT 1200)
+set_tests_properties(target_compile_check PROPERTIES LABELS target TIMEOUT 1800
+                     FIXTURES_SETUP adcs_target_build)
+
+# ---- 2. Host/target replays -----------------------------------------------------------------
+set(ADCS_REPLAY_STEPS 400 CACHE STRING "Recorded steps per replay (>= 200)")
+if(NOT ADCS_REPLAY_STEPS GREATER_EQUAL 200)
+  message(FATAL_ERROR "ADCS_REPLAY_STEPS must be >= 200 (issue 7), got '${ADCS_REPLAY_STEPS}'")
+endif()
+set(ADCS_TARGET_BUILD_JOBS 1 CACHE STRING
+    "Parallel jobs of the nested Cortex-M7 build (one seed-004 TU needs ~2 GB of RAM)")
+set(ADCS_REPLAY_SYSTEMS hybrid ppc se3 dragfree)
+set(_api_hybrid replay::kHybrid)
+set(_api_ppc replay::kPpc)
+set(_api_se3 replay::kSe3)
+set(_api_dragfree replay::kDragFree)
+set(_tr ${PROJECT_SOURCE_DIR}/tests/target)
+set(_rdir ${CMAKE_BINARY_DIR}/target_replay)
+set(_rgen ${_rdir}/gen)
+set(_tdir ${CMAKE_BINARY_DIR}/target)
+list(GET _eigen_inc 0 _eigen_inc0)
+file(MAKE_DIRECTORY ${_rgen})
+
+# Host side: each System's core compiled once (shared by the recorder and the host replay), with
+# the target's arithmetic: no FMA contraction, no SSE reordering of Eigen's sums. The recorder
+# uses the same flags: EIGEN_DONT_VECTORIZE changes Eigen's alignment and inline code, which must
+# not differ between translation units linked together (ODR).
+add_library(adcs_replay_host_flags INTERFACE)
+target_compile_options(adcs_replay_host_flags INTERFACE -ffp-contract=off)
+target_compile_definitions(adcs_replay_host_flags INTERFACE EIGEN_DONT_VECTORIZE)
+target_include_directories(adcs_replay_host_flags INTERFACE ${_tr})
+target_link_libraries(adcs_replay_host_flags INTERFACE adcs::adcs adcs_warnings)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+  add_library(adcs_replay_core_${sys} OBJECT EXCLUDE_FROM_ALL ${_tr}/replay_${sys}.cpp)
+  target_link_libraries(adcs_replay_core_${sys} PUBLIC adcs_replay_host_flags)
+endforeach()
+
+# The recorder closes each paper loop around the System cores and writes the input rows.
+add_executable(adcs_record_inputs EXCLUDE_FROM_ALL ${_tr}/record_inputs.cpp)
+target_include_directories(adcs_record_inputs PRIVATE ${PROJECT_SOURCE_DIR}/src)
+target_link_libraries(adcs_record_inputs PRIVATE adcs_replay_host_flags)
+set_target_properties(adcs_record_inputs PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
+set(_inputs)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+  target_link_libraries(adcs_record_inputs PRIVATE adcs_replay_core_${sys})
+  add_custom_command(OUTPUT ${_rgen}/replay_inputs_${sys}.hpp
+    COMMAND adcs_record_inputs ${sys} ${_rgen}/replay_inputs_${sys}.hpp ${ADCS_REPLAY_STEPS}
+    DEPENDS adcs_record_inputs
+    COMMENT "Recording the ${sys} replay inputs (${ADCS_REPLAY_STEPS} closed-loop steps)" VERBATIM)
+  list(APPEND _inputs ${_rgen}/replay_inputs_${sys}.hpp)
+endforeach()
+add_custom_target(adcs_replay_inputs DEPENDS ${_inputs})
+
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+  add_executable(replay_${sys}_host EXCLUDE_FROM_ALL ${_tr}/replay_main.cpp ${_rgen}/replay_inputs_${sys}.hpp)
+  target_compile_definitions(replay_${sys}_host PRIVATE ADCS_REPLAY_API=${_api_${sys}}
+                             "ADCS_REPLAY_INPUTS=\"replay_inputs_${sys}.hpp\"")
+  target_include_directories(replay_${sys}_host PRIVATE ${_rgen})
+  target_link_libraries(replay_${sys}_host PRIVATE adcs_replay_core_${sys})
+  set_target_properties(replay_${sys}_host PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
+endforeach()
+add_executable(adcs_replay_compare EXCLUDE_FROM_ALL ${_tr}/replay_compare.cpp)
+target_link_libraries(adcs_replay_compare PRIVATE adcs_warnings)
+set_target_properties(adcs_replay_compare PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
+
+# Target side: tests/target as its own CMake project with the Cortex-M7 toolchain file.
+include(ExternalProject)
+set(_elfs)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ITEMS baseline)
+  list(APPEND _elfs ${_tdir}/replay_${sys}.elf)
+endforeach()
+ExternalProject_Add(adcs_target_replay
+  SOURCE_DIR ${_tr}
+  BINARY_DIR ${_tdir}
+  PREFIX ${CMAKE_BINARY_DIR}/target-ep
+  CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/arm-none-eabi.cmake
+             -DCMAKE_BUILD_TYPE=Release -DADCS_SOURCE_DIR=${PROJECT_SOURCE_DIR}
+             -DADCS_EIGEN_INCLUDE_DIR=${_eigen_inc0} -DADCS_REPLAY_GEN_DIR=${_rgen}
+  BUILD_COMMAND ${CMAKE_COMMAND} --build ${_tdir} -j ${ADCS_TARGET_BUILD_JOBS}
+  INSTALL_COMMAND ""
+  BUILD_ALWAYS ON
+  EXCLUDE_FROM_ALL ON
+  DEPENDS adcs_replay_inputs
+  BUILD_BYPRODUCTS ${_elfs})
+
+add_dependencies(adcs_target_check adcs_target_replay adcs_replay_compare)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+  add_dependencies(adcs_target_check replay_${sys}_host)
+endforeach()
+
+find_program(ADCS_QEMU qemu-system-arm)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+  if(NOT ADCS_QEMU)
+    add_test(NAME target_replay_${sys}
+             COMMAND ${CMAKE_COMMAND} -E echo "qemu-system-arm not found: run tools/setup-deps.sh")
+    set_tests_properties(target_replay_${sys} PROPERTIES LABELS target WILL_FAIL ON)
+    continue()
+  endif()
+  add_test(NAME target_replay_${sys}
+           COMMAND ${CMAKE_COMMAND} -DMODE=compare -DNAME=${sys} -DHOST=$<TARGET_FILE:replay_${sys}_host>
+                   -DELF=${_tdir}/replay_${sys}.elf -DQEMU=${ADCS_QEMU}
+                   -DCOMPARE=$<TARGET_FILE:adcs_replay_compare> -DSTEPS=${ADCS_REPLAY_STEPS} -DTOL=1e-12
+                   -DWORK=${_rdir}/${sys} -P ${_tr}/run_replay_check.cmake)
+  add_test(NAME target_icount_${sys}
+           COMMAND ${CMAKE_COMMAND} -DMODE=icount -DNAME=${sys} -DELF=${_tdir}/replay_${sys}.elf
+                   -DQEMU=${ADCS_QEMU} -DSTEPS=${ADCS_REPLAY_STEPS} -DWORK=${_rdir}/${sys}
+                   -DCOSTS_JSON=${PROJECT_SOURCE_DIR}/bench/target-costs.json
+                   -P ${_tr}/run_replay_check.cmake)
+  set_tests_properties(target_replay_${sys} target_icount_${sys} PROPERTIES
+                       LABELS target FIXTURES_REQUIRED adcs_target_build TIMEOUT 600)
+endforeach()

@@ -1,0 +1,378 @@
+// Host program run at build time: closes each paper loop around the replay System itself (its
+// core, replay_<name>.cpp, the same object code the host replay runs) and writes the System's
+// input of every step as a C++ header of hex-float literals (exact): replay_inputs_<name>.hpp in
+// the build tree. Usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>
+// Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
+//
+// The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
+// scenarios offer (the scenario classes keep their loops private, so the plant wrappers of
+// hybrid_adaptive.cpp, flexible_ppc.cpp, se3_loop.cpp and drag_free.cpp are restated here):
+//   hybrid   A-REF: TP-FULL + D1 deviations + σ_d, one RK4 step per 1 ms period (integrator=rk4)
+//   ppc      flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s
+//   se3      chaser + target on SE(3), state 1, disturbance, RK4 at h/10 (integrator=rk4)
+//   dragfree the 27-state exact ZOH truth with seeded noise (run seed 0 -> streams of seed 1)
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "adcs/math/quaternion.hpp"
+#include "adcs/plant/drag_free.hpp"
+#include "adcs/plant/flexible_configurations.hpp"
+#include "adcs/plant/flexible_spacecraft.hpp"
+#include "adcs/plant/se3_spacecraft.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
+#include "adcs/reference/sinusoidal_euler.hpp"
+#include "adcs/reference/sinusoidal_rate.hpp"
+#include "replay_runtime.hpp"
+#include "sim/random.hpp"
+#include "sim/rk4_integrator.hpp"
+#include "sim/sampled_data.hpp"
+
+namespace {
+
+using namespace adcs;
+using Rows = std::vector<std::vector<double>>;
+using Row = std::vector<double>;
+
+[[noreturn]] void fail(const std::string& what) {
+  std::fprintf(stderr, "record_inputs: %s\n", what.c_str());
+  std::exit(1);
+}
+
+void append(Row& row, const Eigen::Ref<const Eigen::VectorXd>& v) {
+  for (Eigen::Index i = 0; i < v.size(); ++i) row.push_back(v(i));
+}
+
+//! The loop must stay in the usable statuses (ok or degraded-but-valid) for its inputs to be a
+//! meaningful sequence: every status column ("st..." names) of the last sample is checked.
+void check_statuses(const replay::Api& sys) {
+  std::vector<double> v(static_cast<std::size_t>(sys.num_columns));
+  sys.outputs(v.data());
+  for (int c = 0; c < sys.num_columns; ++c)
+    if (std::strncmp(sys.columns[c].name, "st", 2) == 0 && !usable(static_cast<Status>(static_cast<int>(v[c]))))
+      fail(std::string(sys.name) + ": " + sys.columns[c].name + " = " +
+           to_string(static_cast<Status>(static_cast<int>(v[c]))) + " while recording");
+}
+
+//! One sample through the System's parts, as the replay's step() runs it.
+void step(const replay::Api& sys, const Row& row) {
+  if (static_cast<int>(row.size()) != sys.input_width) fail(std::string(sys.name) + ": row layout mismatch");
+  for (int part = 0; part < sys.parts; ++part) sys.step_part(part, row.data());
+  check_statuses(sys);
+}
+
+// ------------------------------------------------------------------------------ seed 001
+//! TP-FULL plus σ_d integrated alongside (src/scenarios/hybrid_adaptive.cpp, HybridSimPlant).
+struct HybridSimPlant {
+  using FullPlant = VscmgFullPlant<4, 3>;
+  static constexpr int kStateSize = FullPlant::kStateSize + 3;
+  static constexpr int kInputSize = FullPlant::kInputSize;
+  using State = Vec<kStateSize>;
+  using Input = Vec<kInputSize>;
+  const FullPlant* plant;
+  SinusoidalRateReference ref;
+  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
+    FullPlant::State xp = x.head<FullPlant::kStateSize>(), dp;
+    plant->derivative(t, xp, u, dp);
+    xdot.head<FullPlant::kStateSize>() = dp;
+    xdot.tail<3>() = ref.sigma_dot(t, x.tail<3>());
+  }
+};
+
+Rows record_hybrid(int steps) {
+  using FullPlant = HybridSimPlant::FullPlant;
+  const FullPlant plant(vscmg_params_A_REF());  // truth = nominal + D1 (spec A.5)
+  if (plant.status() != Status::ok) fail("hybrid plant rejected");
+  const replay::Api& sys = replay::kHybrid;
+  if (sys.init_status() != Status::ok) fail("hybrid controller rejected");
+  const double T = sys.period_s;
+  HybridSimPlant sim{&plant, SinusoidalRateReference{}};
+  HybridSimPlant::State x;  // σ = σ_d = 0, ω = 0, γ = 0, Ω_w = 0 (spec §A.4 #24)
+  x << plant.initial_state(Vec3::Zero(), Vec3::Zero(), Vec<4>::Zero(), Vec3::Zero()), Vec3::Zero();
+  Rows rows;
+  auto control = [&](double t, const HybridSimPlant::State& xs, HybridSimPlant::Input& u) {
+    const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
+    const MrpReferenceSample r = sim.ref.sample(t, xs.tail<3>());
+    Row row;  // σ_BN, ω_BN_B (with the γ̇ held over the last period), γ, Ω_w, σ_d, σ̇_d, σ̈_d
+    append(row, FullPlant::sigma_BN(xp));
+    append(row, plant.omega_BN_B(xp, u));
+    append(row, FullPlant::gamma(xp));
+    append(row, FullPlant::Omega_w(xp));
+    append(row, r.sigma);
+    append(row, r.sigma_dot);
+    append(row, r.sigma_ddot);
+    step(sys, row);
+    sys.command(u.data());
+    rows.push_back(row);
+  };
+  sim::SampledDataOptions opt;
+  opt.t_end = steps * T;
+  opt.sample_period = T;
+  sim::Rk4Integrator<HybridSimPlant> integ(sim, T);
+  sim::run_sampled_data(sim, integ, x, opt, control, [](double, const auto&, const auto&) {});
+  return rows;
+}
+
+// ------------------------------------------------------------------------------ seed 002
+//! Flexible truth plant plus d(t) (src/scenarios/flexible_ppc.cpp, FlexibleSimPlant).
+struct FlexibleSimPlant {
+  using Plant = FlexibleSpacecraft<2, 4>;
+  static constexpr int kStateSize = Plant::kStateSize;
+  static constexpr int kInputSize = 3;
+  using State = Plant::State;
+  using Input = Vec3;
+  const Plant* plant;
+  double d_amp, n0;
+  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
+    const double c = std::cos(n0 * t), s = std::sin(n0 * t);
+    plant->derivative(t, x, Vec3(u + d_amp * Vec3(c + 1.0, c + s, s + 1.0)), xdot);
+  }
+};
+
+Rows record_ppc(int steps) {
+  using Plant = FlexibleSimPlant::Plant;
+  constexpr double d2r = 3.14159265358979323846 / 180.0;
+  const Plant plant(flexible_params_seed002());
+  if (plant.status() != Status::ok) fail("flexible plant rejected");
+  const FlexibleSimPlant sim{&plant, 0.0045, 0.0011};  // seed 002 §4: a = 0.0045 N m, n0 = 0.0011 rad/s
+  const SinusoidalEulerReference ref;                   // seed 002 §4 defaults
+  const replay::Api& sys = replay::kPpc;
+  if (sys.init_status() != Status::ok) fail("PPATC rejected");
+  const double T = sys.period_s;
+  Plant::State x = Plant::initial_state(Vec3(0.25, 0.15, -0.20) * d2r, Vec3(0.02, 0.01, -0.02) * d2r);
+  Rows rows;
+  auto control = [&](double t, const Plant::State& xs, Vec3& u) {
+    const EulerReferenceSample r = ref.sample(t);
+    Row row{t};  // t, ϑ, ω, ϑ_d, ϑ̇_d, ϑ̈_d (perfect measurements, Assumption 1)
+    append(row, Plant::angles(xs));
+    append(row, Plant::omega_BN_B(xs));
+    append(row, r.angles);
+    append(row, r.angles_dot);
+    append(row, r.angles_ddot);
+    step(sys, row);
+    sys.command(u.data());
+    rows.push_back(row);
+  };
+  sim::SampledDataOptions opt;
+  opt.t_end = steps * T;
+  opt.sample_period = T;
+  sim::Rk4Integrator<FlexibleSimPlant> integ(sim, std::min(T, 1e-3));
+  sim::run_sampled_data(sim, integ, x, opt, control, [](double, const auto&, const auto&) {});
+  return rows;
+}
+
+// ------------------------------------------------------------------------------ seed 003
+//! Chaser (0..12) and target (13..25), each [q, R_N, ω, v] (src/scenarios/se3_loop.cpp,
+//! Se3PairPlant).
+struct Se3PairPlant {
+  static constexpr int kBody = 13;
+  static constexpr int kStateSize = 2 * kBody;
+  static constexpr int kInputSize = 6;
+  using State = Vec<kStateSize>;
+  using Input = Vec6;
+  const Se3Spacecraft* chaser;
+  const Se3Spacecraft* target;
+  const Se3ScenarioParams* scenario;
+
+  static Se3SpacecraftState body(const State& x, int off) noexcept {
+    Se3SpacecraftState s;
+    const Vec4 q = x.segment<4>(off);
+    s.C_NB = quat_to_dcm(QuaternionSF::from_scalar_first(q / q.norm())).transpose();
+    s.R_N = x.segment<3>(off + 4);
+    s.omega_BN_B = x.segment<3>(off + 7);
+    s.v_B = x.segment<3>(off + 10);
+    return s;
+  }
+  static void put(State& x, int off, const Se3SpacecraftState& s) noexcept {
+    x.segment<4>(off) = dcm_to_quat(s.C_NB.transpose()).scalar_first();
+    x.segment<3>(off + 4) = s.R_N;
+    x.segment<3>(off + 7) = s.omega_BN_B;
+    x.segment<3>(off + 10) = s.v_B;
+  }
+  static void rates(const Se3Spacecraft& m, const State& x, int off, const Vec6& tau_c, const Vec6& tau_d,
+                    State& xdot) noexcept {
+    Se3SpacecraftRates r;
+    if (m.derivative(body(x, off), tau_c, tau_d, r) != Status::ok) {
+      xdot.segment<kBody>(off).setConstant(std::numeric_limits<double>::quiet_NaN());
+      return;
+    }
+    const Vec4 q = x.segment<4>(off);
+    const Vec3 w = x.segment<3>(off + 7);
+    xdot(off) = -0.5 * q.tail<3>().dot(w);  // q̇ = ½ q ⊗ (0, ω)
+    xdot.segment<3>(off + 1) = 0.5 * (q(0) * w + q.tail<3>().cross(w));
+    xdot.segment<3>(off + 4) = r.R_dot_N;
+    xdot.segment<3>(off + 7) = r.omega_dot_B;
+    xdot.segment<3>(off + 10) = r.v_dot_B;
+  }
+  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
+    rates(*chaser, x, 0, u, se3_disturbance(t, *scenario), xdot);
+    rates(*target, x, kBody, Vec6::Zero(), Vec6::Zero(), xdot);
+  }
+  bool normalize(State& x) const noexcept {
+    bool changed = false;
+    for (int off : {0, kBody}) {
+      const double n = x.segment<4>(off).norm();
+      if (n != 1.0 && n > 0.0) {
+        x.segment<4>(off) /= n;
+        changed = true;
+      }
+    }
+    return changed;
+  }
+};
+
+Rows record_se3(int steps) {
+  const replay::Api& sys = replay::kSe3;
+  if (sys.init_status() != Status::ok) fail("se3 controller rejected");
+  Se3ScenarioParams sp;  // spec A.8 defaults, as the System's
+  sp.control_period = sys.period_s;
+  Se3SpacecraftParams truth_p;
+  if (se3_chaser_truth_params(sp, truth_p) != Status::ok) fail("se3 truth parameters");
+  const Se3Spacecraft chaser(truth_p), target(se3_target_params(sp));
+  Se3SpacecraftState o0;
+  if (se3_target_initial_state(sp, o0) != Status::ok) fail("se3 target initial state");
+  const Se3SpacecraftState c0 = se3_chaser_initial_state(o0, kSe3InitialPoses[0]);  // state 1
+  const Se3PairPlant plant{&chaser, &target, &sp};
+  Se3PairPlant::State x;
+  Se3PairPlant::put(x, 0, c0);
+  Se3PairPlant::put(x, Se3PairPlant::kBody, o0);
+  Rows rows;
+  auto control = [&](double, const Se3PairPlant::State& xs, Vec6& u) {
+    Row row;  // chaser then target: C_NB (column-major), R_N, ω, v_B
+    for (int off : {0, Se3PairPlant::kBody}) {
+      const Se3SpacecraftState b = Se3PairPlant::body(xs, off);
+      append(row, b.C_NB.reshaped());
+      append(row, b.R_N);
+      append(row, b.omega_BN_B);
+      append(row, b.v_B);
+    }
+    step(sys, row);
+    sys.command(u.data());
+    rows.push_back(row);
+  };
+  sim::SampledDataOptions opt;
+  opt.t_end = steps * sp.control_period;
+  opt.sample_period = sp.control_period;
+  sim::Rk4Integrator<Se3PairPlant> integ(plant, sp.control_period / 10.0);  // spec C.1: h_c/10
+  sim::run_sampled_data(plant, integ, x, opt, control, [](double, const auto&, const auto&) {});
+  return rows;
+}
+
+// ------------------------------------------------------------------------------ seed 004
+Rows record_dragfree(int steps) {
+  const replay::Api& sys = replay::kDragFree;
+  if (sys.init_status() != Status::ok || sys.parts != 2) fail("drag-free filters/controller rejected");
+  DragFreeParams d;  // Table 2 defaults, as the System's
+  d.h = sys.period_s;
+  DragFreeDiscrete model;
+  if (drag_free_discretize(d, model) != Status::ok) fail("drag-free discretisation");
+  const DragFreeNoise noise = drag_free_noise(d);
+  // Noise streams as NoiseStreams(seed + 1) of src/scenarios/drag_free.cpp, run seed 0.
+  const std::uint64_t seed = 1;
+  std::vector<sim::Rng> rw, rd, ra;
+  for (int i = 0; i < 9; ++i) rw.emplace_back(seed * 1000003u + 11u + i);
+  for (int i = 0; i < 9; ++i) rd.emplace_back(seed * 1000003u + 101u + i);
+  for (int i = 0; i < 3; ++i) ra.emplace_back(seed * 1000003u + 211u + i);
+  constexpr double kPi = 3.14159265358979323846;
+  // f(t) as DragFreeConfig::f/set_disturbance: T_Dsc = F_Dsc = bias + amp sin(ω_d t + 2πi/3)
+  // (Table 2: -12.8 mN, 7.7 mN, 1.2e-3 rad/s), T_Dtm = 0.
+  auto put_f = [](Vec<27>& X, double t) {
+    for (int i = 0; i < 3; ++i) {
+      const double s = -12.8e-3 + 7.7e-3 * std::sin(1.2e-3 * t + 2.0 * kPi * i / 3.0);
+      X(DragFreeIndex::T_Dsc + i) = s;
+      X(DragFreeIndex::F_Dsc + i) = s;
+      X(DragFreeIndex::T_Dtm + i) = 0.0;
+    }
+  };
+  Vec<27> X = Vec<27>::Zero();
+  put_f(X, 0.0);
+  Rows rows;
+  for (int k = 0; k < steps; ++k) {
+    const double t = k * d.h;
+    Row row(static_cast<std::size_t>(sys.input_width), 0.0);  // Y, y_c, φ_cmd = 0 (before t_on = 1e4 s)
+    const Vec<9> Y = model.C_d * X;
+    for (int i = 0; i < 9; ++i) row[i] = Y(i) + noise.sigma_pos * rd[i].normal();
+    sys.step_part(0, row.data());  // predictions, Algorithm 1 update, ADRC
+    Vec<9> u;
+    sys.command(u.data());
+    Vec<9> w;
+    for (int i = 0; i < 3; ++i) w(i) = noise.sigma_T_sc * rw[i].normal();
+    for (int i = 3; i < 6; ++i) w(i) = noise.sigma_F_sc * rw[i].normal();
+    for (int i = 6; i < 9; ++i) w(i) = noise.sigma_T_tm * rw[i].normal();
+    for (int j = 0; j < 3; ++j) {
+      const Vec3 F_applied = u.segment<3>(3) + w.segment<3>(3);
+      const double y = drag_free_accelerometer(d, X, F_applied, j) + noise.sigma_acc * ra[j].normal();
+      row[9 + j] = saturate_accelerometer(d, y);
+    }
+    sys.step_part(1, row.data());  // Algorithm 2 updates with y_c, fusion
+    check_statuses(sys);
+    X = (model.A_d * X + model.B_d * (u + w)).eval();
+    put_f(X, t + d.h);
+    if (!all_finite(X)) fail("drag-free truth diverged");
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void write_header(const char* path, const char* name, const char* what, const Rows& rows) {
+  std::FILE* f = std::fopen(path, "w");
+  if (!f) fail(std::string("cannot write ") + path);
+  std::fprintf(f,
+               "// Generated by record_inputs (tests/target/record_inputs.cpp) at build time; do not edit.\n"
+               "// %s: %s, %zu steps of the System's input rows, hex floats (exact).\n"
+               "#pragma once\nnamespace replay_data {\n"
+               "inline constexpr int kSteps = %zu;\ninline constexpr int kWidth = %zu;\n"
+               "alignas(8) static const double kRows[%zu][%zu] = {\n",
+               name, what, rows.size(), rows.size(), rows.front().size(), rows.size(), rows.front().size());
+  char buf[40];
+  for (const std::vector<double>& r : rows) {
+    std::fputs("    {", f);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (!std::isfinite(r[i])) fail("non-finite input recorded");
+      *replay::put_hexfloat(buf, r[i]) = '\0';
+      std::fprintf(f, "%s%s", i ? ", " : "", buf);
+    }
+    std::fputs("},\n", f);
+  }
+  std::fputs("};\n}  // namespace replay_data\n", f);
+  if (std::fclose(f) != 0) fail(std::string("cannot write ") + path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) fail("usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>");
+  const std::string name = argv[1];
+  const int steps = std::atoi(argv[3]);
+  if (steps < 1) fail("steps must be >= 1");
+  Rows rows;
+  const char* what = "";
+  try {
+    if (name == "hybrid") {
+      rows = record_hybrid(steps);
+      what = "seed 001 A-REF closed loop, T_c = 1 ms";
+    } else if (name == "ppc") {
+      rows = record_ppc(steps);
+      what = "seed 002 flexible-ppc closed loop, T = 1e-4 s";
+    } else if (name == "se3") {
+      rows = record_se3(steps);
+      what = "seed 003 se3-ptc closed loop (state 1), 8 Hz";
+    } else if (name == "dragfree") {
+      rows = record_dragfree(steps);
+      what = "seed 004 dragfree-adrc closed loop, h = 0.1 s";
+    } else {
+      fail("unknown system " + name);
+    }
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+  if (static_cast<int>(rows.size()) != steps) fail("recorded " + std::to_string(rows.size()) + " steps");
+  write_header(argv[2], name.c_str(), what, rows);
+  return 0;
+}

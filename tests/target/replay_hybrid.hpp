@@ -1,0 +1,84 @@
+#pragma once
+// Replay core of seed 001 (control/hybrid_adaptive.hpp): HybridAdaptive<4, 3> on the A-REF
+// configuration of src/scenarios/hybrid_adaptive.cpp (nominal 4-CMG pyramid + 3 wheels, the
+// paper's gains, T_c = 1 ms, explicit-Euler adaptation, H_I^n = 0 because Ω_w(0) = 0). One
+// step() = one HybridAdaptive::step() (as BM_HybridAdaptive_Step). Used by the host and target
+// replays and by record_inputs.cpp, which closes the loop around this very object.
+#include "adcs/control/hybrid_adaptive.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
+#include "replay_system.hpp"
+
+namespace replay {
+
+class HybridSystem {
+ public:
+  using Controller = adcs::HybridAdaptive<4, 3>;
+  static constexpr const char* kName = "hybrid";
+  // Row: σ_BN (3), ω_BN_B (3), γ (4), Ω_w (3), σ_d (3), σ̇_d (3), σ̈_d (3).
+  static constexpr int kInputWidth = 22;
+  static constexpr int kCommandSize = 7, kParts = 1;
+  static constexpr double kPeriod = 1.0e-3;  // [s] T_c, HybridAdaptiveParams default (spec A.5)
+  // Comparison scales (replay_system.hpp, Column): per group of like outputs, a power of ten at
+  // or below the smallest of their largest |value|s over the recorded run, so that the 1e-12
+  // tolerance means 12 significant digits of the signal, not of a value passing through zero.
+  // γ̇ 8.6e-4 .. 2.6e-3 rad/s, Ω̇_w 1.9e-6 .. 6.3e-6 rad/s², Θ̂_F 3.4e-6 .. 6.4e-6 N m s, Θ̂_cG:
+  // Δt̂ part 1.0e-9 .. 2.7e-7, Δŝ part 1.2e-13 .. 1.9e-10, Θ̂_wG 4.4e-15 .. 1.3e-12 (the
+  // deviation estimates are barely excited in 0.4 s).
+  static constexpr double kUg = 1e-4, kUw = 1e-6, kThF = 1e-6, kThT = 1e-10, kThS = 1e-13, kThW = 1e-15;
+  static constexpr Column kColumns[] = {
+      {"status", 0.0}, {"safeguards", 0.0}, {"u_g1", kUg},   {"u_g2", kUg},   {"u_g3", kUg},
+      {"u_g4", kUg},   {"u_w1", kUw},       {"u_w2", kUw},   {"u_w3", kUw},   {"thF1", kThF},
+      {"thF2", kThF},  {"thF3", kThF},      {"thc11", kThT}, {"thc12", kThT}, {"thc13", kThT},
+      {"thc14", kThS}, {"thc15", kThS},     {"thc16", kThS}, {"thc21", kThT}, {"thc22", kThT},
+      {"thc23", kThT}, {"thc24", kThS},     {"thc25", kThS}, {"thc26", kThS}, {"thc31", kThT},
+      {"thc32", kThT}, {"thc33", kThT},     {"thc34", kThS}, {"thc35", kThS}, {"thc36", kThS},
+      {"thc41", kThT}, {"thc42", kThT},     {"thc43", kThT}, {"thc44", kThS}, {"thc45", kThS},
+      {"thc46", kThS}, {"thw11", kThW},     {"thw12", kThW}, {"thw13", kThW}, {"thw21", kThW},
+      {"thw22", kThW}, {"thw23", kThW},     {"thw31", kThW}, {"thw32", kThW}, {"thw33", kThW}};
+
+  static Controller::Params params() noexcept {
+    Controller::Params p;
+    p.nominal = adcs::pyramid_4cmg_3rw_nominal();  // spec A.5 A-REF; the remaining fields are seed 001 §4
+    p.control_period_s = kPeriod;
+    return p;
+  }
+
+  HybridSystem() noexcept : ctrl_(params()) {}
+  adcs::Status init_status() const noexcept { return ctrl_.status(); }
+
+  void step(const double* row) noexcept {
+    Controller::Measurement m;
+    Controller::Reference r;  // ω_f, ω̇_f are not read by the law
+    m.sigma_BN = adcs::Vec3::Map(row);
+    m.omega_BN_B = adcs::Vec3::Map(row + 3);
+    m.gamma = adcs::Vec<4>::Map(row + 6);
+    m.Omega_w = adcs::Vec3::Map(row + 10);
+    r.sigma = adcs::Vec3::Map(row + 13);
+    r.sigma_dot = adcs::Vec3::Map(row + 16);
+    r.sigma_ddot = adcs::Vec3::Map(row + 19);
+    status_ = ctrl_.step(m, r, cmd_);
+  }
+
+  void step_part(int, const double* row) noexcept { step(row); }
+  void command(double* u) const noexcept {
+    for (int i = 0; i < 7; ++i) u[i] = cmd_.u(i);
+  }
+
+  void outputs(double* v) const noexcept {
+    *v++ = static_cast<double>(status_);
+    *v++ = static_cast<double>(ctrl_.safeguard_count());
+    for (int i = 0; i < 7; ++i) *v++ = cmd_.u(i);
+    for (int i = 0; i < 3; ++i) *v++ = ctrl_.theta_F()(i);
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 6; ++k) *v++ = ctrl_.theta_cG(i)(k);
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) *v++ = ctrl_.theta_wG(j)(k);
+  }
+
+ private:
+  Controller ctrl_;
+  Controller::Command cmd_{};
+  adcs::Status status_ = adcs::Status::ok;
+};
+
+}  // namespace replay

@@ -1,0 +1,76 @@
+#pragma once
+// Replay core of seed 002 (control/ppc_neural.hpp): the PPATC law with the paper's gains, true
+// inertia and performance functions (seed002_tracking_gains(), seed002_performance(); U_rad,
+// T = 1e-4 s), as flexible-ppc in src/scenarios/flexible_ppc.cpp. One step() = one
+// PpcNeural::step() with the reference sample as input (BM_FlexiblePPC_Step also samples the
+// reference; here it is recorded so that its sin/cos are not part of the step).
+#include "adcs/control/ppc_neural.hpp"
+#include "replay_system.hpp"
+
+namespace replay {
+
+class PpcSystem {
+ public:
+  using Controller = adcs::PpcNeural;
+  static constexpr const char* kName = "ppc";
+  // Row: t, ϑ (3), ω (3), ϑ_d (3), ϑ̇_d (3), ϑ̈_d (3).
+  static constexpr int kInputWidth = 16;
+  static constexpr int kCommandSize = 3, kParts = 1;
+  static constexpr double kPeriod = 1.0e-4;  // [s] EulerTrackingGains default (spec §B.5)
+  // Comparison scales (replay_system.hpp, Column): per group of like outputs, a power of ten at
+  // or below the smallest of their largest |value|s over the recorded run, so that the 1e-12
+  // tolerance means 12 significant digits of the signal, not of a value passing through zero.
+  // u 14 .. 38 N m (the initial transient), μ̂ 4.7e-3, Ŵ entries 7e-12 .. 8e-6 (one scale for
+  // all, the smallest row's).
+  static constexpr double kTorque = 1.0, kMu = 1e-3, kW = 1e-12;
+  static constexpr Column kColumns[] = {
+      {"status", 0.0}, {"branch1", 0.0}, {"branch2", 0.0}, {"branch3", 0.0}, {"u1", kTorque},
+      {"u2", kTorque}, {"u3", kTorque},  {"mu", kMu},      {"W11", kW},      {"W21", kW},
+      {"W31", kW},     {"W41", kW},      {"W51", kW},      {"W61", kW},      {"W71", kW},
+      {"W12", kW},     {"W22", kW},      {"W32", kW},      {"W42", kW},      {"W52", kW},
+      {"W62", kW},     {"W72", kW},      {"W13", kW},      {"W23", kW},      {"W33", kW},
+      {"W43", kW},     {"W53", kW},      {"W63", kW},      {"W73", kW}};
+
+  static Controller::Params params() noexcept {
+    Controller::Params p{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
+    p.gains.control_period_s = kPeriod;
+    return p;
+  }
+
+  PpcSystem() noexcept : ctrl_(params()) {}
+  adcs::Status init_status() const noexcept { return ctrl_.status(); }
+
+  void step(const double* row) noexcept {
+    Controller::Measurement m;
+    Controller::Reference r;
+    m.t = row[0];
+    m.angles = adcs::Vec3::Map(row + 1);
+    m.omega_BN_B = adcs::Vec3::Map(row + 4);
+    r.angles = adcs::Vec3::Map(row + 7);
+    r.angles_dot = adcs::Vec3::Map(row + 10);
+    r.angles_ddot = adcs::Vec3::Map(row + 13);
+    status_ = ctrl_.step(m, r, cmd_);
+  }
+
+  void step_part(int, const double* row) noexcept { step(row); }
+  void command(double* u) const noexcept {
+    for (int i = 0; i < 3; ++i) u[i] = cmd_.torque_B(i);
+  }
+
+  void outputs(double* v) const noexcept {
+    *v++ = static_cast<double>(status_);
+    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(static_cast<int>(ctrl_.branch(i)));
+    for (int i = 0; i < 3; ++i) *v++ = cmd_.torque_B(i);
+    *v++ = ctrl_.mu();
+    const adcs::Mat<7, 3>& W = ctrl_.weights();
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 7; ++i) *v++ = W(i, j);
+  }
+
+ private:
+  Controller ctrl_;
+  Controller::Command cmd_{};
+  adcs::Status status_ = adcs::Status::ok;
+};
+
+}  // namespace replay

@@ -1,0 +1,52 @@
+#pragma once
+// The small interface between a replayed flight System and the code around it (the replay
+// driver, the input recorder), so that the heavy Eigen/adcs code of each System is compiled once
+// per side: in its replay_<name>.cpp ("core"), which the host replay, the recorder and the
+// target replay link. This header includes no Eigen.
+//
+// A System (replay_<name>.hpp, included by its core only) provides:
+//   static constexpr const char* kName; static constexpr int kInputWidth; double kPeriod;
+//   static constexpr Column kColumns[]; static constexpr int kCommandSize; static constexpr int kParts;
+//   adcs::Status init_status() const;
+//   void step(const double* row) noexcept;               one control sample (what is measured)
+//   void step_part(int part, const double* row) noexcept; the sample in kParts pieces (recorder)
+//   void outputs(double* values) const noexcept;         kColumns values after the last step
+//   void command(double* u) const noexcept;              the command the loop applies (recorder)
+#include "adcs/core/status.hpp"
+
+namespace replay {
+
+//! One output column: name and the scale below which differences count absolutely: the
+//! comparison uses |host - target| / max(|host|, scale); scale 0 = must match exactly (statuses,
+//! counters, printed as integers).
+struct Column {
+  const char* name;
+  double scale;
+};
+
+struct Api {
+  const char* name;
+  int input_width;       //!< doubles per recorded row
+  double period_s;       //!< [s] control period of the loop the rows come from
+  const Column* columns;
+  int num_columns;
+  int command_size;
+  int parts;             //!< 1, or 2 when the loop feeds part of a row after the first part ran
+  adcs::Status (*init_status)();
+  void (*step)(const double* row);                 //!< one step() of the live System
+  void (*step_part)(int part, const double* row);  //!< recorder: parts 0..parts-1 = one step()
+  void (*outputs)(double* values);
+  void (*command)(double* u);
+  //! Target cost mode (replay_runtime.hpp, CostMeter); null on the host.
+  bool (*calibrate)(const double* row, char* report);
+  long long (*measure)(const double* row);
+};
+
+// Defined by the cores replay_<name>.cpp.
+extern const Api kHybrid;    // seed 001
+extern const Api kPpc;       // seed 002
+extern const Api kSe3;       // seed 003
+extern const Api kDragFree;  // seed 004
+extern const Api kBaseline;  // empty System (target size baseline)
+
+}  // namespace replay
