@@ -51,4 +51,17 @@ TEST(RwAllocation, RejectsNonFiniteAndBadGeometry) {
   EXPECT_EQ(b.allocate(adcs::Vec3(0.1, 0, 0), us), adcs::Status::invalid_parameter);
   EXPECT_EQ(us, adcs::Vec<4>::Constant(7.0));
 }
+// Found by tests/fuzz (fuzz_seed001): a finite but absurd request overflowed G_s⁺ L to Inf and
+// the scaling into the limit turned it into NaN with status saturated.
+TEST(RwAllocation, OverflowingRequestIsRefusedNotTurnedIntoNaN) {
+  const Alloc a(params());
+  adcs::Vec<4> us = adcs::Vec<4>::Constant(7.0);
+  const double big = std::numeric_limits<double>::max();
+  EXPECT_EQ(a.allocate(adcs::Vec3(big, -big, big), us), adcs::Status::out_of_range);
+  EXPECT_EQ(us, adcs::Vec<4>::Constant(7.0));
+  // Large but representable requests are still scaled into the limit.
+  EXPECT_EQ(a.allocate(adcs::Vec3(1e300, 0.0, 0.0), us), adcs::Status::saturated);
+  EXPECT_TRUE(adcs::all_finite(us));
+  EXPECT_LE(us.cwiseAbs().maxCoeff(), 0.2);
+}
 }  // namespace

@@ -203,6 +203,27 @@ TEST(PpcNeural, FirstErrorOutsideTheFunnelIsRefused) {
   EXPECT_EQ(adcs::PpcNeural(bad).status(), Status::invalid_parameter);
 }
 
+// Found by tests/fuzz (fuzz_seed002): a rejected first step used to latch the funnel branches
+// (and mark the law started) from its e, so the next, good sample was judged on the wrong side.
+TEST(PpcNeural, RejectedFirstStepDoesNotFixTheFunnelBranches) {
+  adcs::PpcNeural law(ppc_params());
+  adcs::PpcNeural::Measurement m;
+  m.angles = Vec3(-0.1, -0.1, -0.1) * kD2r;  // inside the funnel, on the negative side
+  m.omega_BN_B = Vec3::Constant(1e200);      // finite, but ω × Jω overflows: rejected
+  adcs::PpcNeural::Command out;
+  EXPECT_EQ(law.step(m, adcs::EulerReferenceSample{}, out), Status::out_of_range);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(law.branch(i), adcs::PpcBranch::positive) << i;
+  EXPECT_EQ(out.torque_B, Vec3::Zero());
+  EXPECT_EQ(law.mu(), 0.0);
+  // The first applied sample fixes the branches: positive errors are inside their funnel.
+  m.angles = Vec3(0.1, 0.1, 0.1) * kD2r;
+  m.omega_BN_B.setZero();
+  EXPECT_EQ(law.step(m, adcs::EulerReferenceSample{}, out), Status::ok);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(law.branch(i), adcs::PpcBranch::positive) << i;
+  EXPECT_TRUE(adcs::all_finite(out.torque_B));
+  EXPECT_NE(out.torque_B, Vec3::Zero());
+}
+
 TEST(PpcNeural, ResetRestoresInitialBehaviourBitForBit) {
   Loop<adcs::PpcNeural> a(ppc_params()), b(ppc_params());
   Vec3 ua[3], ub[3];

@@ -373,6 +373,26 @@ void non_finite_inputs_leave_outputs_untouched(const PinvOps& ops, Rng& rng) {
   }
 }
 
+// Found by tests/fuzz (fuzz_seed001, steering): finite X and v whose solution overflows used to
+// come back as Inf/NaN with status ok / ill_conditioned. Now out_of_range, outputs untouched.
+void overflowing_solution_is_refused(const PinvOps& ops, Rng& rng) {
+  const Eigen::Index R = ops.R, C = ops.C;
+  const VectorXd sentinel = VectorXd::Constant(C, 9.0);
+  // Well conditioned (cond 1) but tiny: X X^T = 1e-6 I, so y = v / 1e-6 overflows for |v| ~ 1e307.
+  const MatrixXd X = with_singular_values(rng, C, VectorXd::Constant(R, 1e-3));
+  const VectorXd v = VectorXd::Constant(R, 1e307);
+  VectorXd u = sentinel;
+  EXPECT_EQ(ops.solve(X, v, u, nullptr), Status::out_of_range);
+  EXPECT_TRUE(u == sentinel);
+  EXPECT_EQ(ops.damped(X, v, u, adcs::DampingParams{}, nullptr), Status::out_of_range);
+  EXPECT_TRUE(u == sentinel);
+  // The damped branch too: X exactly singular, lambda^2 = 1e-4, |v| = 1e305.
+  MatrixXd Xs = X;
+  Xs.row(0).setZero();
+  EXPECT_EQ(ops.damped(Xs, VectorXd::Constant(R, 1e305), u, adcs::DampingParams{}, nullptr), Status::out_of_range);
+  EXPECT_TRUE(u == sentinel);
+}
+
 template <int R_, int C_>
 struct Shape {
   static PinvOps ops() { return pinv_ops<R_, C_>(); }
@@ -411,6 +431,10 @@ TYPED_TEST(Pinv, DampedInverseIsContinuousThroughSingularity) {
 TYPED_TEST(Pinv, NonFiniteInputsLeaveOutputsUntouched) {
   Rng rng(TypeParam::seed + 7);
   non_finite_inputs_leave_outputs_untouched(TypeParam::ops(), rng);
+}
+TYPED_TEST(Pinv, OverflowingSolutionIsRefusedWithOutputsUntouched) {
+  Rng rng(TypeParam::seed + 8);
+  overflowing_solution_is_refused(TypeParam::ops(), rng);
 }
 
 // =============================================================================================

@@ -36,12 +36,16 @@ class RwTorqueAllocator {
   const PinvInfo& geometry() const noexcept { return info_; }
 
   //! u_s = -G_s^+ L_r_B, scaled into the limit. Returns saturated when scaled, non_finite_input
-  //! (u_s untouched) on a non-finite request, invalid_parameter if construction failed.
+  //! (u_s untouched) on a non-finite request, out_of_range (u_s untouched) when a finite but
+  //! absurd request (|L_r_B| ~ 1e308) overflows G_s^+ L_r_B, invalid_parameter if construction
+  //! failed.
   [[nodiscard]] Status allocate(const Vec3& L_r_B, Vec<N>& u_s) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(L_r_B)) return Status::non_finite_input;
     Vec<N> cmd;
     cmd.noalias() = -G_pinv_ * L_r_B;
+    // Scaling an infinite peak would give inf * 0 = NaN: refuse instead of clipping.
+    if (!all_finite(cmd)) return Status::out_of_range;
     const double peak = cmd.cwiseAbs().maxCoeff();
     Status s = Status::ok;
     if (peak > p_.torque_limit) {

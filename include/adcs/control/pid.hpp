@@ -29,12 +29,17 @@ class Pid {
   void reset() noexcept { e_i_.setZero(); }
   const Vec<N>& integral() const noexcept { return e_i_; }
 
-  //! One sample. non_finite_input leaves the integral untouched and `out` unchanged.
+  //! One sample. non_finite_input, or out_of_range (finite but absurd errors, ~1e308, whose
+  //! integral or output overflows), leave the integral untouched and `out` unchanged.
   [[nodiscard]] Status step(const Vec<N>& e_p, const Vec<N>& e_d, Vec<N>& out) noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(e_p) || !all_finite(e_d)) return Status::non_finite_input;
-    e_i_ += p_.period_s * e_p;
-    out = p_.kp.cwiseProduct(e_p) + p_.ki.cwiseProduct(e_i_) + p_.kd.cwiseProduct(e_d);
+    const Vec<N> e_i = e_i_ + p_.period_s * e_p;
+    const Vec<N> cmd = p_.kp.cwiseProduct(e_p) + p_.ki.cwiseProduct(e_i) + p_.kd.cwiseProduct(e_d);
+    // Commit only finite results: an Inf integral would poison every later sample.
+    if (!all_finite(e_i) || !all_finite(cmd)) return Status::out_of_range;
+    e_i_ = e_i;
+    out = cmd;
     return Status::ok;
   }
 

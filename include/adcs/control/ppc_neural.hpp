@@ -66,7 +66,8 @@ class PpcNeural {
   //! ok; constraint_violated (robust mode: an error at its funnel edge was clamped, flagged);
   //! out_of_range (funnel violated, or e(0) outside the funnel at the first step — the law is
   //! undefined there); non_finite_input; singular (|θ| at gimbal lock). Except for ok and
-  //! constraint_violated, `out` is the last good command and the estimates are untouched.
+  //! constraint_violated, `out` is the last good command and the estimates and funnel branches
+  //! are untouched (the branches are fixed by the first step that is applied).
   [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
                             Diagnostics* diag = nullptr) noexcept {
     out = core_.last();
@@ -76,13 +77,34 @@ class PpcNeural {
     if (ks != Status::ok) return ks;
     const double c = core_.angle_scale();
     const Vec3 e = c * k.e, e_dot = c * k.e_dot;  // law units
-    if (!started_) {
-      const Status init = ppc_.init(e);
-      if (init != Status::ok) return init;
+    if (started_) return apply(ppc_, m, r, k, e, e_dot, out, diag);
+    // First step: fix the branches on a copy, kept only if the step is applied, so a rejected
+    // first sample (e.g. an overflow further down) does not latch branches from its e.
+    PrescribedPerformance<3> first = ppc_;
+    const Status init = first.init(e);
+    if (init != Status::ok) return init;
+    const Status s = apply(first, m, r, k, e, e_dot, out, diag);
+    if (usable(s)) {
+      ppc_ = first;
       started_ = true;
     }
+    return s;
+  }
+
+  const Mat<7, 3>& weights() const noexcept { return core_.compensator().weights(); }
+  double mu() const noexcept { return core_.compensator().mu(); }
+  RbfCompensator<6, 7, 3>& compensator() noexcept { return core_.compensator(); }
+  PpcBranch branch(int i) const noexcept { return ppc_.branch(i); }
+
+ private:
+  //! Steps 2-14 with the funnel `ppc` (branches fixed); commits the estimates and the command
+  //! only when it returns ok or constraint_violated.
+  Status apply(const PrescribedPerformance<3>& ppc, const Measurement& m, const Reference& r,
+               const EulerTrackingCore::Kinematics& k, const Vec3& e, const Vec3& e_dot, Command& out,
+               Diagnostics* diag) noexcept {
+    const double c = core_.angle_scale();
     PpcSample<3> ps;
-    const Status ts = ppc_.transform(m.t, e, e_dot, ps);                            // steps 2-7
+    const Status ts = ppc.transform(m.t, e, e_dot, ps);                             // steps 2-7
     if (!usable(ts)) return ts;
     const Vec3& lambda = p_.gains.lambda;
     const Vec3 s = lambda.cwiseProduct(ps.eps) + ps.eps_dot;                        // eq. (10)
@@ -103,12 +125,6 @@ class PpcNeural {
     return ts;
   }
 
-  const Mat<7, 3>& weights() const noexcept { return core_.compensator().weights(); }
-  double mu() const noexcept { return core_.compensator().mu(); }
-  RbfCompensator<6, 7, 3>& compensator() noexcept { return core_.compensator(); }
-  PpcBranch branch(int i) const noexcept { return ppc_.branch(i); }
-
- private:
   static PpcParams<3> scaled(PpcParams<3> p, double c) noexcept {
     for (auto& f : p.rho) {
       f.rho0 *= c;

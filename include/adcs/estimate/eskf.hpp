@@ -88,8 +88,10 @@ class Eskf {
     return s;
   }
 
-  //! Measurement update with Y_k (Joseph form). non_finite_input / ill_conditioned leave the
-  //! state untouched.   Algorithm 1 measurement update
+  //! Measurement update with Y_k (Joseph form). non_finite_input / singular (C P Cᵀ + R not
+  //! positive definite) / out_of_range (overflow) leave the state untouched. (singular, not
+  //! ill_conditioned: that status is usable(), "a regularised result was returned", and nothing
+  //! is returned here.)   Algorithm 1 measurement update
   [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
     if (status_ != Status::ok) return status_;
     Candidate c;
@@ -142,7 +144,7 @@ class Eskf {
     const Mat<N, NY> PCt = C_nz_.mul_by_transpose(P_);  // P Cᵀ (C a selector: 9 of 243)
     const Mat<NY, NY> S_y = p_.R + C_nz_.mul_by_transpose(Mat<NY, N>(PCt.transpose()));  // C P Cᵀ + R
     const Eigen::LLT<Mat<NY, NY>> llt(S_y);
-    if (llt.info() != Eigen::Success) return Status::ill_conditioned;
+    if (llt.info() != Eigen::Success) return Status::singular;  // nothing applied: not usable()
     const Mat<N, NY> K = solve_gain(llt.matrixLLT(), PCt);
     const Vec<NY> innovation = Y - C_nz_.mul_by_transpose(Mat<1, N>(x_.transpose())).transpose();
     out.x = x_;
@@ -159,6 +161,9 @@ class Eskf {
     if (!all_finite(out.x) || !all_finite(out.P)) return Status::out_of_range;
     flush_negligible<N>(out.P);
     out.projected = project_if_not_psd<N>(out.P);
+    // The eigen-projection of a finite P with entries near 1e308 (after set_estimate or
+    // replace_substate with absurd values) can itself overflow: check again.
+    if (out.projected && !all_finite(out.P)) return Status::out_of_range;
     out.theta = -1.0;
     return Status::ok;
   }

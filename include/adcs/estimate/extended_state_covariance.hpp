@@ -8,6 +8,7 @@
 // θ policy (spec §B.4): trace_optimal (default [D]) θ_k = √(tr Q1 / tr(A P Aᵀ)), the minimiser of
 // tr(θ APAᵀ + Q1/θ) at the current P; fixed_initial (literal [P]) θ* = √(tr Q1 / tr P_0).
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -92,13 +93,20 @@ bool positive_pivots(const Mat<N, N>& P) noexcept {
 //! cone by clipping eigenvalues at 0 (spec §B.4 numerics). Returns true when it projected. For a
 //! PSD matrix the projection is the identity, so doing it only when needed changes nothing but
 //! the cost. positive_pivots proves the usual positive definite case; LDLT settles the
-//! semidefinite boundary.
+//! semidefinite boundary. A P whose projection is not representable (entries near 1e308 with an
+//! eigenvalue beyond DBL_MAX, or a failed decomposition) is set to NaN, so that the callers'
+//! finiteness check refuses the step instead of committing a made-up covariance.
 template <int N>
 bool project_if_not_psd(Mat<N, N>& P) noexcept {
   if (positive_pivots<N>(P)) return false;
   const Eigen::LDLT<Mat<N, N>> ldlt(P);
   if (ldlt.info() == Eigen::Success && (ldlt.vectorD().array() >= 0.0).all()) return false;
   const Eigen::SelfAdjointEigenSolver<Mat<N, N>> es(P);
+  // Found by tests/fuzz: NaN/Inf eigenvalues went through cwiseMax(0) as 0 and gave P = 0.
+  if (es.info() != Eigen::Success || !all_finite(es.eigenvalues())) {
+    P.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return true;
+  }
   const Vec<N> ev = es.eigenvalues().cwiseMax(0.0);
   P = es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
   P = 0.5 * (P + P.transpose()).eval();

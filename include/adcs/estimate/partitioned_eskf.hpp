@@ -79,6 +79,9 @@ class PartitionedEskf {
   //! Algorithm 1 measurement update (see Eskf::update), Y in the full output order.
   [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
     if (status_ != Status::ok) return status_;
+    // Checked here, not only per block: block 1 could otherwise report its own failure for a Y
+    // whose non-finite entries sit in block 2's outputs.
+    if (!all_finite(Y)) return Status::non_finite_input;
     Vec<NY1> Y1;
     Vec<NY2> Y2;
     for (int i = 0; i < NY1; ++i) Y1(i) = Y(y1_[i]);

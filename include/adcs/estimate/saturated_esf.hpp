@@ -79,6 +79,8 @@ class SaturatedEsf {
     Mat3 P_pred = bounded_increment_prediction<3>(APA, Q1_, Q2_, theta);
     if (!all_finite(x_pred) || !all_finite(P_pred)) return Status::out_of_range;
     keep_psd<3>(P_pred);
+    // Symmetrising ((P + Pᵀ)/2) or projecting a finite P near 1e308 can overflow: check again.
+    if (!all_finite(P_pred)) return Status::out_of_range;
     x_ = x_pred;
     P_ = P_pred;
     return Status::ok;
@@ -86,7 +88,8 @@ class SaturatedEsf {
 
   //! Measurement update with the (possibly saturated) reading y_c and the applied input u_k.
   //! ok (in range), saturated (set-valued or skipped update used), non_finite_input /
-  //! ill_conditioned / out_of_range (state untouched).   eqs. (21)-(34)
+  //! singular (innovation variance not > 0 or not finite) / out_of_range (state untouched).
+  //! eqs. (21)-(34)
   [[nodiscard]] Status update(double y_c, double u) noexcept {
     if (status_ != Status::ok) return status_;
     if (!std::isfinite(y_c) || !std::isfinite(u)) return Status::non_finite_input;
@@ -99,7 +102,7 @@ class SaturatedEsf {
     const double R_eff = p_.R_a + p_.D * p_.D * p_.S;               // R_a + D² S
     const double CPC = std::fmax(p_.C * P_ * p_.C.transpose(), 0.0);  // [D] clamp at >= 0
     const double S_y = CPC + R_eff;                                 // (27)
-    if (!(S_y > 0.0) || !std::isfinite(S_y)) return Status::ill_conditioned;
+    if (!(S_y > 0.0) || !std::isfinite(S_y)) return Status::singular;  // nothing applied: not usable()
     const Vec3 K = P_ * p_.C.transpose() / S_y;                     // (22)
     const Mat3 IKC = Mat3::Identity() - K * p_.C;
     Mat3 P_new = IKC * P_ * IKC.transpose() + R_eff * K * K.transpose();  // (21) P*
@@ -117,6 +120,7 @@ class SaturatedEsf {
     }
     if (!all_finite(x_new) || !all_finite(P_new)) return Status::out_of_range;
     keep_psd<3>(P_new);
+    if (!all_finite(P_new)) return Status::out_of_range;  // as in predict()
     x_ = x_new;
     P_ = P_new;
     if (upper || lower) {

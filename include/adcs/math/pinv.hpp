@@ -65,7 +65,8 @@ inline Status factor_gram(const Mat<R, C>& X, Eigen::LDLT<Mat<R, R>>& ldlt,
 }  // namespace detail
 
 //! u = X^T (X X^T)^-1 v through an LDLT of the SPD matrix X X^T.
-//! Returns non_finite_input or singular (cond(X X^T) > kPinvMaxCondition) with u untouched.
+//! Returns non_finite_input, singular (cond(X X^T) > kPinvMaxCondition) or out_of_range (finite
+//! inputs whose solution overflows, e.g. |v| ~ 1e300) with u untouched.
 template <int R, int C>
 Status right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
                         PinvInfo* info = nullptr) noexcept {
@@ -74,7 +75,9 @@ Status right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
   const Status s = detail::factor_gram<R, C>(X, ldlt, info);
   if (s != Status::ok) return s;
   const Vec<R> y = ldlt.solve(v);
-  u.noalias() = X.transpose() * y;
+  const Vec<C> result = X.transpose() * y;
+  if (!all_finite(result)) return Status::out_of_range;  // never hand out Inf/NaN as a solution
+  u = result;
   return Status::ok;
 }
 
@@ -84,7 +87,9 @@ Status right_pinv(const Mat<R, C>& X, Mat<C, R>& X_pinv, PinvInfo* info = nullpt
   Eigen::LDLT<Mat<R, R>> ldlt;
   const Status s = detail::factor_gram<R, C>(X, ldlt, info);
   if (s != Status::ok) return s;
-  X_pinv.noalias() = X.transpose() * ldlt.solve(Mat<R, R>::Identity());
+  const Mat<C, R> result = X.transpose() * ldlt.solve(Mat<R, R>::Identity());
+  if (!all_finite(result)) return Status::out_of_range;  // X X^T finite but its inverse overflowed
+  X_pinv = result;
   return Status::ok;
 }
 
@@ -99,7 +104,8 @@ struct DampingParams {
 };
 
 //! u = X^T (X X^T + lambda^2 I)^-1 v. Returns ok (no damping needed), ill_conditioned (damped,
-//! u usable), or non_finite_input / singular with u untouched. singular means the damped Gram
+//! u usable), or non_finite_input / singular / out_of_range (finite inputs whose solution
+//! overflows, e.g. |v| ~ 1e300 through a damped inverse) with u untouched. singular means the damped Gram
 //! matrix is numerically singular (LDLT rcond <= 1e-16): possible only with lambda_max = 0 near
 //! rank loss, or when sigma_max^2 / lambda^2 exceeds ~1e16 (e.g. sigma_max >~ 1e6 with the
 //! default damping) -- scale X or raise lambda_max then.
@@ -122,7 +128,9 @@ Status damped_right_pinv_solve(const Mat<R, C>& X, const Vec<R>& v, Vec<C>& u,
   if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1.0 / (1e4 * kPinvMaxCondition)))
     return Status::singular;
   const Vec<R> y = ldlt.solve(v);
-  u.noalias() = X.transpose() * y;
+  const Vec<C> result = X.transpose() * y;
+  if (!all_finite(result)) return Status::out_of_range;  // a usable status promises a finite u
+  u = result;
   return local.damped ? Status::ill_conditioned : Status::ok;
 }
 

@@ -1,0 +1,111 @@
+// Explicit instantiation of every class template of include/adcs (and the function templates of
+// the per-step kernels) with the sizes the library is used at (tests/target/instantiate_all.cpp,
+// the scenarios). The 27/36-state function templates (expm<36>, zoh_discretize<27, 9>,
+// keep_psd<27>) are left to the drag-free tests that instantiate them at those sizes: explicitly
+// instantiated here they cost g++ minutes of compile time for no extra line. A header's template code is only compiled, and so only seen by gcov, where it
+// is instantiated: this TU makes every member of every class template count in the coverage
+// report (tools/coverage.sh), so an untested member shows as uncovered instead of invisible.
+//
+// Only in the coverage build (preset "coverage" defines ADCS_INSTANTIATE_ALL): instantiating every
+// member of the 27-state filters, the SE(3)/VSCMG plants and the controllers costs g++ ~5 CPU
+// minutes for this one TU (measured, -fsyntax-only already), which the Release and ASan builds
+// of CI do not need: there the file is the test below alone.
+#include <gtest/gtest.h>
+
+#include "adcs/adcs.hpp"
+
+#ifdef ADCS_INSTANTIATE_ALL
+namespace adcs {
+// actuator/
+template struct RwAllocationParams<4>;
+template class RwTorqueAllocator<4>;
+template struct CompositeQuantizerParams<6>;
+template class CompositeQuantizer<6>;
+template Status saturate_then_quantize<6>(const Vec<6>&, const Vec<6>&, CompositeQuantizer<6>&, Vec<6>&,
+                                          std::uint32_t*) noexcept;
+template int saturate_each<7>(Vec<7>&, const Vec<7>&) noexcept;
+template int saturate_each<9>(Vec<9>&, const Vec<9>&) noexcept;
+template Status steer<7>(const Mat<3, 7>&, const Vec3&, const SteeringParams&, Vec<7>&, SteeringInfo*) noexcept;
+template Status steer_available<7>(const Mat<3, 7>&, const Vec3&, const SteeringParams&, ActuatorMask, Vec<7>&,
+                                   SteeringInfo*) noexcept;
+// adapt/
+template struct PpcParams<3>;
+template struct PpcSample<3>;
+template class PrescribedPerformance<3>;
+template struct RbfLayerParams<6, 7>;
+template class RbfLayer<6, 7>;
+template struct RbfCompensatorParams<6, 7, 3>;
+template class RbfCompensator<6, 7, 3>;
+template Mat<7, 3> rbf_weight_step<7, 3>(const Mat<7, 3>&, const Vec<7>&, const Vec<3>&, const Vec<3>&, double,
+                                         double) noexcept;
+template Status smooth_projection<6>(const Vec<6>&, const Vec<6>&, const ProjectionParams&, Vec<6>&, bool*) noexcept;
+template Status smooth_projection<3>(const Vec<3>&, const Vec<3>&, const ProjectionParams&, Vec<3>&, bool*) noexcept;
+template bool radial_safeguard<6>(Vec<6>&, double) noexcept;
+template bool radial_safeguard<3>(Vec<3>&, double) noexcept;
+// control/
+template struct MrpPdParams<4>;
+template struct MrpPdMeasurement<4>;
+template class MrpPd<4>;
+template class MrpPd<3>;
+template struct HybridAdaptiveParams<4, 3>;
+template struct HybridAdaptiveMeasurement<4, 3>;
+template struct HybridAdaptiveCommand<4, 3>;
+template struct HybridAdaptiveDiagnostics<4, 3>;
+template class HybridAdaptive<4, 3>;
+template struct PidParams<1>;
+template class Pid<1>;
+template class Pid<3>;
+template Vec<6> sig<6>(const Vec<6>&, double) noexcept;
+// estimate/
+template struct EskfParams<27, 9, 9, 9>;
+template class Eskf<27, 9, 9, 9>;
+template class Eskf<18, 9, 9, 6>;  // the two blocks of DragFreeEskf
+template class Eskf<9, 9, 9, 3>;
+template class PartitionedEskf<18, 9, 9, 9, 6, 3>;
+template bool keep_psd<3>(Mat<3, 3>&) noexcept;
+// math/
+template Status expm<3>(const Mat<3, 3>&, Mat<3, 3>&) noexcept;
+template Status zoh_discretize<3, 1>(const Mat<3, 3>&, const Mat<3, 1>&, double, Mat<3, 3>&, Mat<3, 1>&) noexcept;
+template Status right_pinv_solve<3, 7>(const Mat<3, 7>&, const Vec<3>&, Vec<7>&, PinvInfo*) noexcept;
+template Status right_pinv<3, 4>(const Mat<3, 4>&, Mat<4, 3>&, PinvInfo*) noexcept;
+template Status damped_right_pinv_solve<3, 7>(const Mat<3, 7>&, const Vec<3>&, Vec<7>&, const DampingParams&,
+                                              PinvInfo*) noexcept;
+template Status solve_continuous_lyapunov<6>(const Mat<6, 6>&, const Mat<6, 6>&, Mat<6, 6>&) noexcept;
+template Status place_double_integrator<3>(const AxisPoles<3>&, Mat<3, 6>&) noexcept;
+template Mat<6, 6> double_integrator_closed_loop<3>(const Mat<3, 6>&) noexcept;
+// plant/
+template struct RigidBodyRwParams<4>;
+template class RigidBodyRw<4>;
+template struct FlexibleSpacecraftParams<2, 4>;
+template class FlexibleSpacecraft<2, 4>;
+template struct VscmgGeometry<4, 3>;
+template struct VscmgDeviation<4, 3>;
+template struct VscmgParams<4, 3>;
+template class VscmgFullPlant<4, 3>;
+template class VscmgCtrlPlant<4, 3>;
+template VscmgGeometry<4, 3> apply_deviation<4, 3>(const VscmgGeometry<4, 3>&, const VscmgDeviation<4, 3>&) noexcept;
+template VscmgDeviation<4, 3> rigid_mounting_deviation<4, 3>(const VscmgGeometry<4, 3>&, const Mat<3, 4>&,
+                                                            const Mat<3, 3>&) noexcept;
+}  // namespace adcs
+#endif  // ADCS_INSTANTIATE_ALL
+
+namespace {
+using adcs::Status;
+
+// Construction status of the instantiated classes from their default parameters: those whose
+// defaults are a usable configuration report ok, those that need the caller's geometry (wheel
+// axes, inertia) refuse it instead of building a silently wrong object.
+TEST(InstantiateAll, DefaultParametersGiveTheDocumentedConstructionStatus) {
+  EXPECT_EQ(adcs::RwTorqueAllocator<4>(adcs::RwAllocationParams<4>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::seed003_quantizer_params()).status(), Status::ok);
+  EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::CompositeQuantizerParams<6>{}).status(), Status::ok);
+  EXPECT_EQ(adcs::Pid<1>(adcs::PidParams<1>{}).status(), Status::ok);
+  EXPECT_EQ((adcs::Eskf<27, 9, 9, 9>(adcs::EskfParams<27, 9, 9, 9>{}).status()), Status::ok);
+  EXPECT_EQ((adcs::RbfCompensator<6, 7, 3>(adcs::RbfCompensatorParams<6, 7, 3>{}).status()), Status::ok);
+  EXPECT_EQ(adcs::PrescribedPerformance<3>(adcs::PpcParams<3>{}).status(), Status::ok);
+  adcs::HybridAdaptive<4, 3>::Params hp;
+  hp.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  EXPECT_EQ((adcs::HybridAdaptive<4, 3>(hp).status()), Status::ok);
+  EXPECT_EQ((adcs::FlexibleSpacecraft<2, 4>(adcs::flexible_params_seed002()).status()), Status::ok);
+}
+}  // namespace
