@@ -1,0 +1,258 @@
+// libFuzzer harness, seed 001: HybridAdaptive<4, 3> (with its pseudo-inverse steering), the
+// steering call on its own, and MrpPd<4>. Input format: fuzz_common.hpp; first byte = target.
+//
+// Asserted on every step (besides "no crash, no sanitizer report"):
+//  - the command is finite, whatever the status;
+//  - a non-finite input gives exactly non_finite_input;
+//  - a status that is not usable() ("nothing applied") leaves the command at the last applied one
+//    and every estimate / counter bitwise unchanged;
+//  - an applied step keeps the estimates finite and each Θ̂_G block inside its invariant ball
+//    ‖Θ̂_Gk‖² ≤ β + δ, and counts a safeguard event exactly when it returns constraint_violated.
+#include <cstdint>
+
+#include "adcs/actuator/rw_allocation.hpp"
+#include "adcs/actuator/steering.hpp"
+#include "adcs/control/hybrid_adaptive.hpp"
+#include "adcs/control/mrp_pd.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
+#include "fuzz_common.hpp"
+
+namespace {
+using adcs::Status;
+using adcs::Vec3;
+using Hybrid = adcs::HybridAdaptive<4, 3>;
+using Pd = adcs::MrpPd<4>;
+constexpr int kMaxSteps = 12;
+
+// Four prototypes: {explicit Euler, normalized} x {T_c = 1 ms (paper), 0.1 s (safeguard active)}.
+const Hybrid& hybrid_proto(int variant) {
+  static const Hybrid protos[4] = {
+      Hybrid([] { Hybrid::Params p; p.nominal = adcs::pyramid_4cmg_3rw_nominal(); return p; }()),
+      Hybrid([] {
+        Hybrid::Params p;
+        p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+        p.adaptation_step = adcs::AdaptationStep::normalized;
+        return p;
+      }()),
+      Hybrid([] {
+        Hybrid::Params p;
+        p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+        p.control_period_s = 0.1;
+        return p;
+      }()),
+      Hybrid([] {
+        Hybrid::Params p;
+        p.nominal = adcs::pyramid_4cmg_3rw_nominal();
+        p.adaptation_step = adcs::AdaptationStep::normalized;
+        p.control_period_s = 0.1;
+        return p;
+      }()),
+  };
+  return protos[variant & 3];
+}
+
+struct HybridSnapshot {
+  Vec3 theta_F;
+  adcs::Mat<6, 4> theta_c;
+  adcs::Mat<3, 3> theta_w;
+  std::uint32_t safeguards;
+  explicit HybridSnapshot(const Hybrid& c) : theta_F(c.theta_F()), safeguards(c.safeguard_count()) {
+    for (int i = 0; i < 4; ++i) theta_c.col(i) = c.theta_cG(i);
+    for (int j = 0; j < 3; ++j) theta_w.col(j) = c.theta_wG(j);
+  }
+  bool operator==(const HybridSnapshot& o) const {
+    return fuzz::same_bits_mat(theta_F, o.theta_F) && fuzz::same_bits_mat(theta_c, o.theta_c) &&
+           fuzz::same_bits_mat(theta_w, o.theta_w) && safeguards == o.safeguards;
+  }
+};
+
+void fuzz_hybrid(fuzz::Reader& r) {
+  const int config = r.u8();
+  Hybrid ctrl = hybrid_proto(config);
+  const double bound = ctrl.params().beta_G + ctrl.params().delta_G;
+  if (config & 4) {  // warm start from fuzzed estimates: reaches the projection and the safeguard
+    const Vec3 tF = r.vec<3>();
+    adcs::Mat<6, 4> tc;
+    adcs::Mat<3, 3> tw;
+    for (int i = 0; i < 4; ++i) tc.col(i) = r.vec<6>();
+    for (int j = 0; j < 3; ++j) tw.col(j) = r.vec<3>();
+    const HybridSnapshot before(ctrl);
+    const Status s = ctrl.set_estimates(tF, tc, tw);
+    if (!fuzz::finite(tF) || !fuzz::finite(tc) || !fuzz::finite(tw))
+      FUZZ_CHECK(s == Status::non_finite_input, "HybridAdaptive::set_estimates: non-finite accepted");
+    if (s != Status::ok) FUZZ_CHECK(HybridSnapshot(ctrl) == before, "set_estimates: rejected but changed");
+  }
+  Hybrid::Command last;  // the held command (zero after construction)
+  Hybrid::Diagnostics diag;
+  for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
+    if (config & 16) {  // FDIR: a fuzzed actuator mask (bits beyond M+N must be refused)
+      const adcs::ActuatorMask mask = r.u8() | (r.u8() & 1u ? 0x80u : 0u);
+      const adcs::ActuatorMask old_mask = ctrl.available();
+      const Status sm = ctrl.set_available(mask);
+      if (mask & ~adcs::all_actuators<Hybrid::L>()) {
+        FUZZ_CHECK(sm == Status::out_of_range && ctrl.available() == old_mask,
+                   "HybridAdaptive::set_available: accepted a bit beyond M+N");
+      } else {
+        FUZZ_CHECK(sm == Status::ok && ctrl.available() == mask, "HybridAdaptive::set_available: refused");
+        for (int i = 0; i < Hybrid::L; ++i)  // documented: the held command drops failed actuators
+          if (!((mask >> i) & 1u)) last.u(i) = 0.0;
+      }
+    }
+    Hybrid::Measurement m;
+    m.sigma_BN = Vec3(0.01, -0.02, 0.03) + r.vec<3>();
+    m.omega_BN_B = Vec3(1e-3, 2e-3, -1e-3) + r.vec<3>();
+    m.gamma = r.vec<4>();
+    m.Omega_w = r.vec<3>();
+    adcs::MrpReferenceSample ref;
+    ref.sigma = r.vec<3>();
+    ref.sigma_dot = r.vec<3>();
+    ref.sigma_ddot = r.vec<3>();
+    const bool finite_in = fuzz::finite(m.sigma_BN) && fuzz::finite(m.omega_BN_B) && fuzz::finite(m.gamma) &&
+                           fuzz::finite(m.Omega_w) && fuzz::finite(ref.sigma) && fuzz::finite(ref.sigma_dot) &&
+                           fuzz::finite(ref.sigma_ddot);
+    const HybridSnapshot before(ctrl);
+    Hybrid::Command out;
+    out.u.setConstant(fuzz::kNaN);  // must be overwritten
+    const Status s = ctrl.step(m, ref, out, (config & 8) ? &diag : nullptr);
+    fuzz::stat(0, "HybridAdaptive", s);
+    FUZZ_CHECK(fuzz::finite(out.u), "HybridAdaptive: non-finite command");
+    fuzz::check_status_vs_input(s, finite_in, "HybridAdaptive: non-finite input not rejected");
+    const HybridSnapshot after(ctrl);
+    if (!fuzz::applied(s)) {
+      FUZZ_CHECK(after == before, "HybridAdaptive: rejected step changed the estimates");
+      FUZZ_CHECK(fuzz::same_bits_mat(out.u, last.u), "HybridAdaptive: rejected step did not hold the command");
+      continue;
+    }
+    last = out;
+    for (int i = 0; i < Hybrid::L; ++i)
+      if (!((ctrl.available() >> i) & 1u)) FUZZ_CHECK(out.u(i) == 0.0, "HybridAdaptive: failed actuator commanded");
+    FUZZ_CHECK(fuzz::finite(after.theta_F) && fuzz::finite(after.theta_c) && fuzz::finite(after.theta_w),
+               "HybridAdaptive: non-finite estimate committed");
+    const double tol = bound * (1.0 + 1e-12);
+    FUZZ_CHECK((after.theta_c.colwise().squaredNorm().array() <= tol).all() &&
+                   (after.theta_w.colwise().squaredNorm().array() <= tol).all(),
+               "HybridAdaptive: an estimate left the invariant ball");
+    FUZZ_CHECK(after.safeguards == before.safeguards + (s == Status::constraint_violated ? 1u : 0u),
+               "HybridAdaptive: safeguard count does not match constraint_violated");
+  }
+}
+
+// steer<7> / steer_available<7> on fuzzed X, v, mask: usable statuses give a finite u (exact
+// zeros for unavailable actuators); the others leave u untouched.
+void fuzz_steering(fuzz::Reader& r) {
+  static const adcs::SteeringParams kParams[4] = {{1e-3, 1e-2}, {1e-3, 0.0}, {0.0, 1e-2}, {1.0, 1.0}};
+  const int config = r.u8();
+  const adcs::SteeringParams& p = kParams[config & 3];
+  const bool masked = (config & 4) != 0;
+  for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
+    adcs::Mat<3, 7> X;
+    const double scale = r.value();
+    for (int i = 0; i < 7; ++i) X.col(i) = r.vec<3>();
+    if (fuzz::finite(scale) && scale != 0.0) X.row(r.u8() % 3) *= scale;  // near-rank-deficient X
+    const Vec3 v = r.vec<3>();
+    adcs::Vec<7> u = adcs::Vec<7>::Constant(-7.0);
+    const adcs::Vec<7> u0 = u;
+    adcs::SteeringInfo info;
+    const adcs::ActuatorMask mask = masked ? r.u8() : adcs::all_actuators<7>();
+    const Status s = masked ? adcs::steer_available<7>(X, v, p, mask, u, &info) : adcs::steer<7>(X, v, p, u, &info);
+    fuzz::stat(masked ? 4 : 1, masked ? "steer_available<7>" : "steer<7>", s);
+    if (mask & ~adcs::all_actuators<7>()) {
+      FUZZ_CHECK(s == Status::out_of_range && fuzz::same_bits_mat(u, u0), "steer_available: bad mask accepted");
+      continue;
+    }
+    // steer_available zeroes the columns of unavailable actuators first (documented), so only
+    // the available columns and v count as inputs.
+    bool finite_in = fuzz::finite(v);
+    for (int i = 0; i < 7; ++i)
+      if ((mask >> i) & 1u) finite_in = finite_in && fuzz::finite(adcs::Vec3(X.col(i)));
+    fuzz::check_status_vs_input(s, finite_in, "steer: non-finite input not rejected");
+    if (fuzz::applied(s)) {
+      FUZZ_CHECK(fuzz::finite(u), "steer: usable status with a non-finite u");
+      for (int i = 0; i < 7; ++i)
+        if (!((mask >> i) & 1u)) FUZZ_CHECK(u(i) == 0.0, "steer_available: unavailable actuator commanded");
+    } else {
+      FUZZ_CHECK(fuzz::same_bits_mat(u, u0), "steer: rejected but wrote u");
+    }
+    FUZZ_CHECK((s == Status::ill_conditioned) == (info.mode == adcs::SteeringMode::singularity_robust) ||
+                   !fuzz::applied(s),
+               "steer: status and mode disagree");
+  }
+}
+
+Pd make_pd() {
+  Pd::Params p;
+  p.K = 3.0;
+  p.P = 40.0 * adcs::Mat3::Identity();
+  p.J_rw_B = Vec3(900, 800, 600).asDiagonal();
+  const double s = 1.0 / std::sqrt(3.0);
+  p.G_s_B << 1, 0, 0, s, 0, 1, 0, s, 0, 0, 1, s;
+  p.J_s.setConstant(0.1);
+  return Pd(p);
+}
+
+// RwTorqueAllocator: usable statuses give a finite u_s within the limit; others leave it alone.
+void check_allocation(const Vec3& L) {
+  static const adcs::RwTorqueAllocator<4> alloc([] {
+    adcs::RwAllocationParams<4> p;
+    const double s = 1.0 / std::sqrt(3.0);
+    p.G_s_B << 1, 0, 0, s, 0, 1, 0, s, 0, 0, 1, s;
+    p.torque_limit = 0.2;
+    return p;
+  }());
+  adcs::Vec<4> us = adcs::Vec<4>::Constant(-7.0);
+  const adcs::Vec<4> us0 = us;
+  const Status s = alloc.allocate(L, us);
+  fuzz::stat(3, "RwTorqueAllocator", s);
+  fuzz::check_status_vs_input(s, fuzz::finite(L), "RwTorqueAllocator: non-finite input not rejected");
+  if (fuzz::applied(s))
+    FUZZ_CHECK(fuzz::finite(us) && us.cwiseAbs().maxCoeff() <= 0.2, "RwTorqueAllocator: bad wheel torques");
+  else
+    FUZZ_CHECK(fuzz::same_bits_mat(us, us0), "RwTorqueAllocator: rejected but wrote u_s");
+}
+
+void fuzz_mrp_pd(fuzz::Reader& r) {
+  static const Pd proto = make_pd();
+  Pd ctrl = proto;
+  adcs::MrpPdCommand last;
+  for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
+    Pd::Measurement m;
+    m.sigma_BN = Vec3(0.1, -0.2, 0.3) + r.vec<3>();
+    m.omega_BN_B = Vec3(0.01, 0.0, -0.02) + r.vec<3>();
+    m.Omega = adcs::Vec<4>(10, 20, 30, 40) + r.vec<4>();
+    adcs::AttitudeReference ref;
+    ref.sigma_RN = r.vec<3>();
+    ref.omega_RN_N = r.vec<3>();
+    ref.domega_RN_N = r.vec<3>();
+    const bool finite_in = fuzz::finite(m.sigma_BN) && fuzz::finite(m.omega_BN_B) && fuzz::finite(m.Omega) &&
+                           fuzz::finite(ref.sigma_RN) && fuzz::finite(ref.omega_RN_N) &&
+                           fuzz::finite(ref.domega_RN_N);
+    adcs::MrpPdCommand out;
+    out.L_r_B.setConstant(fuzz::kNaN);
+    const Status s = ctrl.step(m, ref, out);
+    fuzz::stat(2, "MrpPd", s);
+    FUZZ_CHECK(fuzz::finite(out.L_r_B) && fuzz::finite(out.sigma_BR) && fuzz::finite(out.omega_BR_B),
+               "MrpPd: non-finite command");
+    fuzz::check_status_vs_input(s, finite_in, "MrpPd: non-finite input not rejected");
+    check_allocation(r.vec<3>());  // the allocator on its own, any request
+    if (!fuzz::applied(s)) {
+      FUZZ_CHECK(fuzz::same_bits_mat(out.L_r_B, last.L_r_B) && fuzz::same_bits_mat(out.sigma_BR, last.sigma_BR) &&
+                     fuzz::same_bits_mat(out.omega_BR_B, last.omega_BR_B),
+                 "MrpPd: rejected step did not hold the command");
+      continue;
+    }
+    FUZZ_CHECK(s == Status::ok, "MrpPd: undocumented usable status");
+    last = out;
+    check_allocation(out.L_r_B);
+  }
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::Reader r(data, size);
+  switch (r.u8() % 3) {
+    case 0: fuzz_hybrid(r); break;
+    case 1: fuzz_steering(r); break;
+    default: fuzz_mrp_pd(r); break;
+  }
+  return 0;
+}

@@ -1,0 +1,128 @@
+// libFuzzer harness, seed 002: PpcNeural (PPATC: funnel transform + RBF + adaptive bound) and
+// AdaptiveTracking (ATC), in both angle-unit conventions, PPATC with and without the robust clamp.
+// Input format: fuzz_common.hpp; first byte = law, second = configuration.
+//
+// Asserted on every step (besides "no crash, no sanitizer report"):
+//  - the torque command is finite, whatever the status;
+//  - a non-finite input gives exactly non_finite_input;
+//  - a status that is not usable() leaves the command at the last applied one and the RBF
+//    weights Ŵ, the bound estimate μ̂ and (PPATC) the funnel branches bitwise unchanged;
+//  - an applied step keeps Ŵ finite and μ̂ finite and >= 0 (spec B-S12), and reports
+//    constraint_violated only in robust-clamp mode;
+//  - RbfCompensator::set_state (warm start) refuses non-finite values and μ̂ < 0 untouched.
+#include <array>
+#include <cstdint>
+
+#include "adcs/control/adaptive_tracking.hpp"
+#include "adcs/control/ppc_neural.hpp"
+#include "fuzz_common.hpp"
+
+namespace {
+using adcs::Status;
+using adcs::Vec3;
+constexpr int kMaxSteps = 12;
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+adcs::PpcNeuralParams ppc_params(int config) {
+  adcs::PpcNeuralParams p{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
+  p.gains.units = (config & 1) ? adcs::AngleUnits::degrees : adcs::AngleUnits::radians;
+  p.ppc.robust_clamp = (config & 2) != 0;
+  return p;
+}
+
+const adcs::PpcNeural& ppc_proto(int config) {
+  static const adcs::PpcNeural protos[4] = {adcs::PpcNeural(ppc_params(0)), adcs::PpcNeural(ppc_params(1)),
+                                            adcs::PpcNeural(ppc_params(2)), adcs::PpcNeural(ppc_params(3))};
+  return protos[config & 3];
+}
+
+const adcs::AdaptiveTracking& atc_proto(int config) {
+  static const adcs::AdaptiveTracking protos[2] = {
+      adcs::AdaptiveTracking(adcs::AdaptiveTrackingParams{ppc_params(0).gains}),
+      adcs::AdaptiveTracking(adcs::AdaptiveTrackingParams{ppc_params(1).gains})};
+  return protos[config & 1];
+}
+
+template <class Law>
+struct Snapshot {
+  adcs::Mat<7, 3> W;
+  double mu;
+  std::array<adcs::PpcBranch, 3> branch{};
+  explicit Snapshot(Law& law) : W(law.weights()), mu(law.mu()) {
+    if constexpr (std::is_same_v<Law, adcs::PpcNeural>)
+      for (int i = 0; i < 3; ++i) branch[static_cast<std::size_t>(i)] = law.branch(i);
+  }
+  bool operator==(const Snapshot& o) const {
+    return fuzz::same_bits_mat(W, o.W) && fuzz::same_bits(mu, o.mu) && branch == o.branch;
+  }
+};
+
+template <class Law>
+void run(Law& law, int config, fuzz::Reader& r) {
+  if (config & 4) {  // warm start: fuzzed Ŵ, μ̂ (reaches large robust terms and overflow paths)
+    adcs::Mat<7, 3> W;
+    for (int j = 0; j < 3; ++j) W.col(j) = r.vec<7>();
+    const double mu = r.value();
+    const Snapshot<Law> before(law);
+    const Status s = law.compensator().set_state(W, mu);
+    if (!fuzz::finite(W) || !fuzz::finite(mu))
+      FUZZ_CHECK(s == Status::non_finite_input, "RbfCompensator::set_state: non-finite accepted");
+    else if (mu < 0.0)
+      FUZZ_CHECK(s == Status::out_of_range, "RbfCompensator::set_state: mu < 0 accepted");
+    if (s != Status::ok) FUZZ_CHECK(Snapshot<Law>(law) == before, "set_state: rejected but changed");
+  }
+  const adcs::SinusoidalEulerReference ref;
+  const bool robust = std::is_same_v<Law, adcs::PpcNeural> && (config & 2);
+  adcs::EulerTrackingCommand last;  // the last applied command (zero after construction)
+  typename Law::Diagnostics diag;
+  for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
+    adcs::EulerTrackingMeasurement m;
+    m.t = 1e-4 * k + r.value();
+    const adcs::EulerReferenceSample nominal = ref.sample(std::isfinite(m.t) ? m.t : 0.0);
+    m.angles = nominal.angles + Vec3(0.25, 0.15, -0.2) * kDeg + r.vec<3>();  // inside ρ0 = 0.3°
+    m.omega_BN_B = r.vec<3>();
+    adcs::EulerReferenceSample rs = nominal;
+    rs.angles += r.vec<3>();
+    rs.angles_dot += r.vec<3>();
+    rs.angles_ddot += r.vec<3>();
+    const bool finite_in = fuzz::finite(m.t) && fuzz::finite(m.angles) && fuzz::finite(m.omega_BN_B) &&
+                           fuzz::finite(rs.angles) && fuzz::finite(rs.angles_dot) && fuzz::finite(rs.angles_ddot);
+    const Snapshot<Law> before(law);
+    adcs::EulerTrackingCommand out;
+    out.torque_B.setConstant(fuzz::kNaN);  // must be overwritten
+    const Status s = law.step(m, rs, out, (config & 8) ? &diag : nullptr);
+    if constexpr (std::is_same_v<Law, adcs::PpcNeural>)
+      fuzz::stat(0, "PpcNeural", s);
+    else
+      fuzz::stat(1, "AdaptiveTracking", s);
+    FUZZ_CHECK(fuzz::finite(out.torque_B), "Euler tracking law: non-finite command");
+    fuzz::check_status_vs_input(s, finite_in, "Euler tracking law: non-finite input not rejected");
+    const Snapshot<Law> after(law);
+    if (!fuzz::applied(s)) {
+      FUZZ_CHECK(after == before, "Euler tracking law: rejected step changed Ŵ, μ̂ or the funnel branches");
+      FUZZ_CHECK(fuzz::same_bits_mat(out.torque_B, last.torque_B),
+                 "Euler tracking law: rejected step did not hold the command");
+      continue;
+    }
+    FUZZ_CHECK(s == Status::ok || (robust && s == Status::constraint_violated),
+               "Euler tracking law: undocumented usable status");
+    FUZZ_CHECK(fuzz::finite(after.W) && fuzz::finite(after.mu) && after.mu >= 0.0,
+               "Euler tracking law: committed a non-finite or negative estimate");
+    last = out;
+  }
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::Reader r(data, size);
+  const int law = r.u8() & 1;
+  const int config = r.u8();
+  if (law == 0) {
+    adcs::PpcNeural ctrl = ppc_proto(config);
+    run(ctrl, config, r);
+  } else {
+    adcs::AdaptiveTracking ctrl = atc_proto(config);
+    run(ctrl, config, r);
+  }
+  return 0;
+}
