@@ -19,6 +19,7 @@
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/truth_plants.hpp"
 #include "scenarios/status_counts.hpp"
 #include "sim/recorder.hpp"
 #include "sim/rk4_integrator.hpp"
@@ -31,22 +32,6 @@ using Plant = FlexibleSpacecraft<2, 4>;
 constexpr const char* kTable = "seed 002 Table 1/2";
 constexpr const char* kB5 = "assumed (spec B.5)";
 
-//! Truth plant plus the disturbance d(t) of seed 002 §4 (B.4 #22) added to the control torque.
-struct FlexibleSimPlant {
-  static constexpr int kStateSize = Plant::kStateSize;
-  static constexpr int kInputSize = 3;
-  using State = Plant::State;
-  using Input = Vec3;
-  const Plant* plant;
-  double d_amp, n0;
-  Vec3 disturbance(double t) const noexcept {  // d = a [cos n0t + 1, cos n0t + sin n0t, sin n0t + 1]
-    const double c = std::cos(n0 * t), s = std::sin(n0 * t);
-    return d_amp * Vec3(c + 1.0, c + s, s + 1.0);
-  }
-  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
-    plant->derivative(t, x, Vec3(u + disturbance(t)), xdot);
-  }
-};
 
 //! Per-sample errors of the companion (nominal-gain) run, overlaid on the halved-gain plots.
 struct CompanionTrace {

@@ -18,6 +18,7 @@
 #include "adcs/math/euler.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/truth_plants.hpp"
 #include "scenarios/status_counts.hpp"
 #include "sim/cvode_integrator.hpp"
 #include "sim/metrics.hpp"
@@ -33,21 +34,6 @@ constexpr int kM = 4, kN = 3;
 using FullPlant = VscmgFullPlant<kM, kN>;
 using Controller = HybridAdaptive<kM, kN>;
 
-//! TP-FULL plus the reference MRP σ_d (spec §A.2.4: integrated with the plant, same step).
-struct HybridSimPlant {
-  static constexpr int kStateSize = FullPlant::kStateSize + 3;
-  static constexpr int kInputSize = FullPlant::kInputSize;
-  using State = Vec<kStateSize>;
-  using Input = Vec<kInputSize>;
-  const FullPlant* plant;
-  SinusoidalRateReference ref;
-  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
-    FullPlant::State xp = x.head<FullPlant::kStateSize>(), dp;
-    plant->derivative(t, xp, u, dp);
-    xdot.head<FullPlant::kStateSize>() = dp;
-    xdot.tail<3>() = ref.sigma_dot(t, x.tail<3>());
-  }
-};
 
 constexpr const char* kA5 = "assumed (spec A.5)";
 

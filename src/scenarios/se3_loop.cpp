@@ -26,6 +26,8 @@
 // |ω_e,i|, |v_e,i| and the applied command u_c. Every value the paper does not give is a parameter with its spec tag ([A] assumed).
 #include "scenarios/se3_loop.hpp"
 
+#include "scenarios/truth_plants.hpp"
+
 #include <algorithm>
 #include <memory>
 #include <optional>
@@ -47,67 +49,6 @@ constexpr const char* kT1 = "spec A.8 Table 1 [A]";
 constexpr const char* kT2 = "spec A.8 Table 2 [A]";
 constexpr const char* kA9 = "spec A.9 [A]";
 
-// ------------------------------------------------------------------ truth plant (26 states)
-//! Chaser (states 0..12) and target (13..25), each [q (4), R_N (3), ω (3), v (3)].
-struct Se3PairPlant {
-  static constexpr int kBody = 13;
-  static constexpr int kStateSize = 2 * kBody;
-  static constexpr int kInputSize = 6;
-  using State = Vec<kStateSize>;
-  using Input = Vec6;
-
-  const Se3Spacecraft* chaser;      //!< truth J, m
-  const Se3Spacecraft* target;      //!< J_o, m_o
-  const Se3ScenarioParams* scenario;  //!< disturbance
-
-  //! The body at offset `off` (0 chaser, kBody target), C_NB from q/‖q‖.
-  static Se3SpacecraftState body(const State& x, int off) noexcept {
-    Se3SpacecraftState s;
-    const Vec4 q = x.segment<4>(off);
-    s.C_NB = quat_to_dcm(QuaternionSF::from_scalar_first(q / q.norm())).transpose();
-    s.R_N = x.segment<3>(off + 4);
-    s.omega_BN_B = x.segment<3>(off + 7);
-    s.v_B = x.segment<3>(off + 10);
-    return s;
-  }
-  static void put(State& x, int off, const Se3SpacecraftState& s) noexcept {
-    x.segment<4>(off) = dcm_to_quat(s.C_NB.transpose()).scalar_first();
-    x.segment<3>(off + 4) = s.R_N;
-    x.segment<3>(off + 7) = s.omega_BN_B;
-    x.segment<3>(off + 10) = s.v_B;
-  }
-  static void rates(const Se3Spacecraft& m, const State& x, int off, const Vec6& tau_c,
-                    const Vec6& tau_d, State& xdot) noexcept {
-    Se3SpacecraftRates r;
-    if (m.derivative(body(x, off), tau_c, tau_d, r) != Status::ok) {
-      xdot.segment<kBody>(off).setConstant(std::numeric_limits<double>::quiet_NaN());  // CVODE stops
-      return;
-    }
-    const Vec4 q = x.segment<4>(off);
-    const Vec3 w = x.segment<3>(off + 7);
-    xdot(off) = -0.5 * q.tail<3>().dot(w);                            // q̇ = ½ q ⊗ (0, ω)
-    xdot.segment<3>(off + 1) = 0.5 * (q(0) * w + q.tail<3>().cross(w));
-    xdot.segment<3>(off + 4) = r.R_dot_N;
-    xdot.segment<3>(off + 7) = r.omega_dot_B;
-    xdot.segment<3>(off + 10) = r.v_dot_B;
-  }
-  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
-    rates(*chaser, x, 0, u, se3_disturbance(t, *scenario), xdot);
-    rates(*target, x, kBody, Vec6::Zero(), Vec6::Zero(), xdot);
-  }
-  //! Re-normalises both quaternions; true if either changed.
-  bool normalize(State& x) const noexcept {
-    bool changed = false;
-    for (int off : {0, kBody}) {
-      const double n = x.segment<4>(off).norm();
-      if (n != 1.0 && n > 0.0) {
-        x.segment<4>(off) /= n;
-        changed = true;
-      }
-    }
-    return changed;
-  }
-};
 
 std::vector<std::vector<double>> to_rows(const Mat3& m) {
   std::vector<std::vector<double>> v(3, std::vector<double>(3));

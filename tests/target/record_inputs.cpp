@@ -5,8 +5,8 @@
 // Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
 //
 // The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
-// scenarios offer (the scenario classes keep their loops private, so the plant wrappers of
-// hybrid_adaptive.cpp, flexible_ppc.cpp, se3_loop.cpp and drag_free.cpp are restated here):
+// scenarios offer; the plant wrappers are the scenarios' own (src/scenarios/truth_plants.hpp),
+// the drag-free truth is restated (drag_free.cpp keeps it with its noise streams):
 //   hybrid   A-REF: TP-FULL + D1 deviations + σ_d, one RK4 step per 1 ms period (integrator=rk4)
 //   ppc      flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s
 //   se3      chaser + target on SE(3), state 1, disturbance, RK4 at h/10 (integrator=rk4)
@@ -30,6 +30,7 @@
 #include "adcs/reference/sinusoidal_euler.hpp"
 #include "adcs/reference/sinusoidal_rate.hpp"
 #include "replay_runtime.hpp"
+#include "scenarios/truth_plants.hpp"
 #include "sim/random.hpp"
 #include "sim/rk4_integrator.hpp"
 #include "sim/sampled_data.hpp"
@@ -38,6 +39,9 @@ namespace {
 
 using namespace adcs;
 using Rows = std::vector<std::vector<double>>;
+using sim::FlexibleSimPlant;
+using sim::HybridSimPlant;
+using sim::Se3PairPlant;
 using Row = std::vector<double>;
 
 [[noreturn]] void fail(const std::string& what) {
@@ -68,22 +72,6 @@ void step(const replay::Api& sys, const Row& row) {
 }
 
 // ------------------------------------------------------------------------------ seed 001
-//! TP-FULL plus σ_d integrated alongside (src/scenarios/hybrid_adaptive.cpp, HybridSimPlant).
-struct HybridSimPlant {
-  using FullPlant = VscmgFullPlant<4, 3>;
-  static constexpr int kStateSize = FullPlant::kStateSize + 3;
-  static constexpr int kInputSize = FullPlant::kInputSize;
-  using State = Vec<kStateSize>;
-  using Input = Vec<kInputSize>;
-  const FullPlant* plant;
-  SinusoidalRateReference ref;
-  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
-    FullPlant::State xp = x.head<FullPlant::kStateSize>(), dp;
-    plant->derivative(t, xp, u, dp);
-    xdot.head<FullPlant::kStateSize>() = dp;
-    xdot.tail<3>() = ref.sigma_dot(t, x.tail<3>());
-  }
-};
 
 Rows record_hybrid(int steps) {
   using FullPlant = HybridSimPlant::FullPlant;
@@ -120,20 +108,6 @@ Rows record_hybrid(int steps) {
 }
 
 // ------------------------------------------------------------------------------ seed 002
-//! Flexible truth plant plus d(t) (src/scenarios/flexible_ppc.cpp, FlexibleSimPlant).
-struct FlexibleSimPlant {
-  using Plant = FlexibleSpacecraft<2, 4>;
-  static constexpr int kStateSize = Plant::kStateSize;
-  static constexpr int kInputSize = 3;
-  using State = Plant::State;
-  using Input = Vec3;
-  const Plant* plant;
-  double d_amp, n0;
-  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
-    const double c = std::cos(n0 * t), s = std::sin(n0 * t);
-    plant->derivative(t, x, Vec3(u + d_amp * Vec3(c + 1.0, c + s, s + 1.0)), xdot);
-  }
-};
 
 Rows record_ppc(int steps) {
   using Plant = FlexibleSimPlant::Plant;
@@ -168,64 +142,6 @@ Rows record_ppc(int steps) {
 }
 
 // ------------------------------------------------------------------------------ seed 003
-//! Chaser (0..12) and target (13..25), each [q, R_N, ω, v] (src/scenarios/se3_loop.cpp,
-//! Se3PairPlant).
-struct Se3PairPlant {
-  static constexpr int kBody = 13;
-  static constexpr int kStateSize = 2 * kBody;
-  static constexpr int kInputSize = 6;
-  using State = Vec<kStateSize>;
-  using Input = Vec6;
-  const Se3Spacecraft* chaser;
-  const Se3Spacecraft* target;
-  const Se3ScenarioParams* scenario;
-
-  static Se3SpacecraftState body(const State& x, int off) noexcept {
-    Se3SpacecraftState s;
-    const Vec4 q = x.segment<4>(off);
-    s.C_NB = quat_to_dcm(QuaternionSF::from_scalar_first(q / q.norm())).transpose();
-    s.R_N = x.segment<3>(off + 4);
-    s.omega_BN_B = x.segment<3>(off + 7);
-    s.v_B = x.segment<3>(off + 10);
-    return s;
-  }
-  static void put(State& x, int off, const Se3SpacecraftState& s) noexcept {
-    x.segment<4>(off) = dcm_to_quat(s.C_NB.transpose()).scalar_first();
-    x.segment<3>(off + 4) = s.R_N;
-    x.segment<3>(off + 7) = s.omega_BN_B;
-    x.segment<3>(off + 10) = s.v_B;
-  }
-  static void rates(const Se3Spacecraft& m, const State& x, int off, const Vec6& tau_c, const Vec6& tau_d,
-                    State& xdot) noexcept {
-    Se3SpacecraftRates r;
-    if (m.derivative(body(x, off), tau_c, tau_d, r) != Status::ok) {
-      xdot.segment<kBody>(off).setConstant(std::numeric_limits<double>::quiet_NaN());
-      return;
-    }
-    const Vec4 q = x.segment<4>(off);
-    const Vec3 w = x.segment<3>(off + 7);
-    xdot(off) = -0.5 * q.tail<3>().dot(w);  // q̇ = ½ q ⊗ (0, ω)
-    xdot.segment<3>(off + 1) = 0.5 * (q(0) * w + q.tail<3>().cross(w));
-    xdot.segment<3>(off + 4) = r.R_dot_N;
-    xdot.segment<3>(off + 7) = r.omega_dot_B;
-    xdot.segment<3>(off + 10) = r.v_dot_B;
-  }
-  void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
-    rates(*chaser, x, 0, u, se3_disturbance(t, *scenario), xdot);
-    rates(*target, x, kBody, Vec6::Zero(), Vec6::Zero(), xdot);
-  }
-  bool normalize(State& x) const noexcept {
-    bool changed = false;
-    for (int off : {0, kBody}) {
-      const double n = x.segment<4>(off).norm();
-      if (n != 1.0 && n > 0.0) {
-        x.segment<4>(off) /= n;
-        changed = true;
-      }
-    }
-    return changed;
-  }
-};
 
 Rows record_se3(int steps) {
   const replay::Api& sys = replay::kSe3;
