@@ -30,7 +30,8 @@ struct SteeringInfo {
 using SteeringParams = DampingParams;
 
 //! u = X⁺v. Returns ok (exact inverse), ill_conditioned (singularity-robust inverse used; u
-//! usable), non_finite_input or singular (u untouched).
+//! usable), non_finite_input, singular or out_of_range (finite inputs whose solution overflows)
+//! with u untouched.
 //! Bit k set = actuator k (column k of X) may be commanded. Fixed width: L ≤ 32.
 using ActuatorMask = std::uint32_t;
 
@@ -55,7 +56,8 @@ template <int L>
 //! zeroed, so the minimum-norm solution gives them exactly u_k = 0 (a zero column contributes
 //! nothing to X_a X_aᵀ and u = X_aᵀ(·)⁻¹v) and spreads v over the rest. When the remaining
 //! columns lose rank, the singularity-robust inverse takes over (ill_conditioned, u bounded).
-//! out_of_range (u untouched) when the mask names an actuator beyond L.
+//! out_of_range (u untouched) when the mask names an actuator beyond L. The columns of
+//! unavailable actuators are not read (a failed actuator's model may be garbage, NaN included).
 template <int L>
 [[nodiscard]] Status steer_available(const Mat<3, L>& X, const Vec3& v, const SteeringParams& params,
                                      ActuatorMask available, Vec<L>& u, SteeringInfo* info = nullptr) noexcept {
