@@ -359,4 +359,87 @@ TEST(Se3, CoefficientsSatisfyTheirDefiningRelations) {
   EXPECT_EQ(adcs::se3_gamma_rate(0.0), 1.0 / 3780.0);
 }
 
+// =============================================================================================
+// The one-pass error kinematics (se3_error_kinematics, the seed 003 laws' path) against the
+// single functions above, which the finite-difference tests check.
+
+TEST(Se3, SharedCoefficientsMatchTheSingleFunctions) {
+  const auto rel = [](double a, double b) { return std::fabs(a - b) / std::fabs(b); };
+  Rng rng(0x5e300a);
+  for (int k = 0; k < 2000; ++k) {
+    const double phi = k < 7 ? kSpecialPhi[k] : k < 14 ? -kSpecialPhi[k - 7] : rng.uniform(0.0, kPi);
+    const double a = std::max(std::fabs(phi), kSwitch);
+    const adcs::Se3ExpCoordCoefficients c = adcs::se3_exp_coord_coefficients(phi);
+    EXPECT_EQ(c.phi, phi);
+    EXPECT_EQ(c.one_minus_cos, adcs::so3_coeff_one_minus_cos(phi));  // same expression
+    EXPECT_EQ(c.phi_minus_sin, adcs::so3_coeff_phi_minus_sin(phi));  // same expression
+    // Both routes of each closed form cancel to O(1): α by 12/φ² (measured errors against
+    // long double: 9 ε/φ² with tan, 16 ε/φ² with sin/cos), γ by ≈ 1e3/φ⁴ (se3_gamma), γ'/φ
+    // by ≈ 5e4/φ⁶ above its switch at 1 rad (se3_gamma_rate). Below the switches: one series.
+    EXPECT_LE(rel(c.alpha, adcs::se3_alpha(phi)), 40.0 * kEps / (a * a)) << "phi = " << phi;
+    EXPECT_LE(rel(c.gamma, adcs::se3_gamma(phi)), 3600.0 * kEps / std::pow(a, 4)) << "phi = " << phi;
+    EXPECT_LE(rel(c.gamma_rate, adcs::se3_gamma_rate(phi)), 1e5 * kEps) << "phi = " << phi;
+    if (std::fabs(phi) < kSwitch) {
+      EXPECT_EQ(c.alpha, adcs::se3_alpha(phi));
+      EXPECT_EQ(c.gamma, adcs::se3_gamma(phi));
+    }
+  }
+  // Below the switch both are the series: identical.
+  const adcs::Se3ExpCoordCoefficients c0 = adcs::se3_exp_coord_coefficients(0.0);
+  EXPECT_EQ(c0.alpha, 1.0 / 12.0);
+  EXPECT_EQ(c0.gamma, 1.0 / 360.0);
+  EXPECT_EQ(c0.gamma_rate, 1.0 / 3780.0);
+}
+
+TEST(Se3, OnePassErrorKinematicsMatchesTheSingleFunctions) {
+  Rng rng(0x5e300b);
+  const double phis[] = {0.0, 1e-9, 1e-4, 0.049, 0.051, 0.9, 1.1, 2.0, 0.999 * kPi};
+  double worst = 0.0;
+  for (int k = 0; k < 600; ++k) {
+    const Vec6 eta = rng.eta(k < 90 ? phis[k % 9] : rng.uniform(0.0, 0.999 * kPi));
+    const Se3 g = adcs::se3_exp(eta);
+    const Vec6 xi = rng.vec6(k % 2 == 0 ? 1.0 : 0.05);
+    const adcs::Se3ErrorKinematics e = adcs::se3_error_kinematics(g, xi);
+    const Vec6 eta_ref = adcs::se3_log(g);
+    const Mat6 G = adcs::se3_G(eta_ref);
+    const Vec6 eta_dot = G * xi;
+    const double s = 1.0 + eta_ref.norm();
+    const Vec6 y = rng.vec6(1.0);
+    worst = std::max({worst, (e.G.times(y) - G * y).norm() / s,
+                      (e.G.transpose_times(y) - G.transpose() * y).norm() / s,
+                      (e.G.inverse_times(y) - adcs::se3_G_inv(eta_ref) * y).norm() / (s * s)});
+    worst = std::max({worst, (e.eta - eta_ref).norm() / s, max_abs(e.G.matrix() - G) / s,
+                      max_abs(e.G.inverse_matrix() - adcs::se3_G_inv(eta_ref)) / (s * s),
+                      (e.eta_dot - eta_dot).norm() / (s * (1.0 + xi.norm())),
+                      (e.G_dot_xi - adcs::se3_G_dot_xi(eta_ref, eta_dot, xi)).norm() /
+                          (s * (1.0 + xi.norm()) * (1.0 + xi.norm()))});
+  }
+  EXPECT_LE(worst, 1e-12);
+  // The zero-twist and identity cases are exact; Se3GBlocks::identity() is G(0).
+  EXPECT_EQ(adcs::Se3GBlocks::identity().matrix(), Mat6::Identity());
+  EXPECT_EQ(adcs::Se3GBlocks::identity().inverse_matrix(), Mat6::Identity());
+  const adcs::Se3ErrorKinematics id = adcs::se3_error_kinematics(Se3::identity(), Vec6::Zero());
+  EXPECT_EQ(id.eta, Vec6::Zero());
+  EXPECT_EQ(id.G.matrix(), Mat6::Identity());
+  EXPECT_EQ(id.G.inverse_matrix(), Mat6::Identity());
+  EXPECT_EQ(id.G_dot_xi, Vec6::Zero());
+  // Non-finite input propagates (se3_tracking_error checks its result with all_finite()).
+  Se3 bad = Se3::identity();
+  bad.R(2) = kNaN;
+  EXPECT_FALSE(adcs::all_finite(adcs::se3_error_kinematics(bad, Vec6::Zero()).eta));
+  bad = Se3::identity();
+  bad.C(0, 1) = kInf;
+  EXPECT_FALSE(adcs::all_finite(adcs::se3_error_kinematics(bad, Vec6::Zero()).G.matrix()));
+}
+
+TEST(Se3, MatrixFreeAdjointProductsMatchTheMatrices) {
+  Rng rng(0x5e300c);
+  for (int k = 0; k < 200; ++k) {
+    const Se3 g = adcs::se3_exp(rng.eta(rng.uniform(0, kPi), 100.0));
+    const Vec6 xi = rng.vec6(2.0), x = rng.vec6(2.0);
+    EXPECT_LE((adcs::se3_Ad_inv_times(g, x) - adcs::se3_Ad_inv(g) * x).norm(), 1e-13 * (1.0 + g.R.norm()));
+    EXPECT_LE((adcs::se3_ad_times(xi, x) - adcs::se3_ad(xi) * x).norm(), 1e-14);
+  }
+}
+
 }  // namespace

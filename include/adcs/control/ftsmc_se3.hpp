@@ -62,9 +62,9 @@ class FtsmcSe3 {
     Vec6 reach;
     for (int i = 0; i < 6; ++i)
       reach(i) = p_.K_a(i) * s(i) + p_.K_b(i) * sig(s(i), p_.rho) + p_.k_s * std::tanh(s(i) / p_.phi);
-    const Vec6 nu = -e.G_dot_xi_e - e.G * e.F0 - p_.C1.cwiseProduct(e.eta_dot) -
+    const Vec6 nu = -e.G_dot_xi_e - e.G.times(e.F0) - p_.C1.cwiseProduct(e.eta_dot) -
                     p_.C2.cwiseProduct(S_.derivative(e.eta)).cwiseProduct(e.eta_dot) - reach;
-    const Vec6 u_new = se3_apply_inertia(nominal_.params(), e.G_inv * nu);
+    const Vec6 u_new = se3_apply_inertia(nominal_.params(), e.G.inverse_times(nu));
     if (!all_finite(u_new)) {
       u = u_;
       return Status::out_of_range;

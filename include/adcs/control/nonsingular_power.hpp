@@ -22,12 +22,18 @@ namespace adcs {
 
 namespace detail {
 //! |x|^a for x ≥ 0. For a = 0.5, 1, 2 the cheap forms sqrt(x), x, x·x are the correctly rounded
-//! |x|^a (IEEE 754), the result an exact pow gives; other exponents stay with std::pow, e.g.
-//! 1.5 as x·sqrt(x) would round twice.
+//! |x|^a (IEEE 754), the result an exact pow gives. For a = 1.5 and −0.5 (seed 003's sig^{1+p}
+//! and S' = (1−p)|z|^{−p} at p = 0.5) x·sqrt(x) and 1/sqrt(x) round twice (≤ 1 ulp more than a
+//! correctly rounded pow) but are IEEE-exact operations: bit-identical on the host and on the
+//! Cortex-M7, where newlib's pow differs from glibc's in the last ulp, and ~20 instead of several
+//! hundred target instructions (issue 7 budget; 24 pow calls per BsPdTC step before).
+//! Other exponents stay with std::pow.
 inline double abs_pow(double x, double a) noexcept {
   if (a == 0.5) return std::sqrt(x);  // p = 0.5 of seed 003 (spec §A.8): sig^{1−p}
   if (a == 1.0) return x;
   if (a == 2.0) return x * x;
+  if (a == 1.5) return x * std::sqrt(x);   // sig^{1+p}, p = 0.5
+  if (a == -0.5) return 1.0 / std::sqrt(x);  // S'(z) factor |z|^{−p}, p = 0.5
   return std::pow(x, a);
 }
 }  // namespace detail
@@ -86,11 +92,11 @@ class NonsingularPower {
     return z * (l1_ + l2_ * a);
   }
 
-  //! S'(z;ε) = dS/dz. (1−p)|z|^{−p} keeps std::pow: 1/sqrt would round twice.
+  //! S'(z;ε) = dS/dz.
   double derivative(double z) const noexcept {
     if (status_ != Status::ok) return 0.0;
     const double a = std::fabs(z);
-    if (a > q_.eps) return one_minus_p_ * std::pow(a, -q_.p);
+    if (a > q_.eps) return one_minus_p_ * detail::abs_pow(a, -q_.p);
     return l1_ + 2.0 * l2_ * a;
   }
 

@@ -100,28 +100,30 @@ class PrescribedTimeSe3 {
       return se;
     }
     const double c = kPi / (p_.p * p_.T);
-    PrescribedTimeSe3Terms t;
-    t.z1 = e.eta;
-    Vec6 dalpha;  // ∂α_i/∂z1i
+    // Plain locals (copied to terms_ on success): a zero-initialised Terms costs memset calls on
+    // the Cortex-M7 (issue 7 budget).
+    const Vec6& z1 = e.eta;
+    Vec6 alpha, dalpha;  // α, ∂α_i/∂z1i
     for (int i = 0; i < 6; ++i) {
-      const double z = t.z1(i);
-      t.alpha(i) = -p_.K2(i) * z - c * (p_.Lambda(i) * S1_.value(z) + p_.Upsilon(i) * sig(z, 1.0 + p_.p));
+      const double z = z1(i);
+      alpha(i) = -p_.K2(i) * z - c * (p_.Lambda(i) * S1_.value(z) + p_.Upsilon(i) * sig(z, 1.0 + p_.p));
       dalpha(i) = -p_.K2(i) - c * (p_.Lambda(i) * S1_.derivative(z) +
-                                   p_.Upsilon(i) * (1.0 + p_.p) * std::pow(std::abs(z), p_.p));
+                                   p_.Upsilon(i) * (1.0 + p_.p) * detail::abs_pow(std::fabs(z), p_.p));
     }
-    t.z2 = e.eta_dot - t.alpha;                       // z2 = G ξ_e − α
+    const Vec6 z2 = e.eta_dot - alpha;  // z2 = G ξ_e − α
     const Vec6 alpha_dot = dalpha.cwiseProduct(e.eta_dot);
     Vec6 shaping;
     for (int i = 0; i < 6; ++i)
-      shaping(i) = p_.Lambda2(i) * S2_.value(t.z2(i)) + p_.Upsilon2(i) * sig(t.z2(i), 1.0 + p_.p);
-    const Vec6 v1 = -e.G_dot_xi_e - e.G * e.F0 + alpha_dot - p_.K3.cwiseProduct(t.z2) - c * shaping;
-    t.u1 = se3_apply_inertia(nominal_.params(), e.G_inv * v1);
-    const Vec6 b = se3_apply_inverse_inertia(nominal_, e.G.transpose() * t.z2);  // Ξ0⁻¹ Gᵀ z2
-    for (int i = 0; i < 6; ++i) t.u2(i) = -p_.zeta(i) * std::tanh(p_.zeta(i) * b(i) / p_.eps_q);
+      shaping(i) = p_.Lambda2(i) * S2_.value(z2(i)) + p_.Upsilon2(i) * sig(z2(i), 1.0 + p_.p);
+    const Vec6 v1 = -e.G_dot_xi_e - e.G.times(e.F0) + alpha_dot - p_.K3.cwiseProduct(z2) - c * shaping;
+    const Vec6 u1 = se3_apply_inertia(nominal_.params(), e.G.inverse_times(v1));
+    const Vec6 b = se3_apply_inverse_inertia(nominal_, e.G.transpose_times(z2));  // Ξ0⁻¹ Gᵀ z2
+    Vec6 u2;
+    for (int i = 0; i < 6; ++i) u2(i) = -p_.zeta(i) * std::tanh(p_.zeta(i) * b(i) / p_.eps_q);
     const double two_a2 = 2.0 * p_.a * p_.a;
-    t.u3 = -(psi_hat_ / two_a2) * se3_apply_inertia(nominal_.params(), e.G_inv * t.z2);
-    const Vec6 u_new = t.u1 + t.u2 + t.u3;            // (47)
-    const double psi_dot = p_.gamma * t.z2.squaredNorm() / two_a2 - p_.sigma1 * psi_hat_ -
+    const Vec6 u3 = -(psi_hat_ / two_a2) * se3_apply_inertia(nominal_.params(), e.G.inverse_times(z2));
+    const Vec6 u_new = u1 + u2 + u3;  // (47)
+    const double psi_dot = p_.gamma * z2.squaredNorm() / two_a2 - p_.sigma1 * psi_hat_ -
                            p_.sigma2 * psi_hat_ * psi_hat_ * psi_hat_;
     const double psi_new = std::fmax(0.0, psi_hat_ + p_.h * psi_dot);
     if (!all_finite(u_new) || !std::isfinite(psi_new)) {
@@ -131,7 +133,12 @@ class PrescribedTimeSe3 {
     u_ = u_new;
     u = u_;
     psi_hat_ = psi_new;
-    terms_ = t;
+    terms_.z1 = z1;
+    terms_.z2 = z2;
+    terms_.alpha = alpha;
+    terms_.u1 = u1;
+    terms_.u2 = u2;
+    terms_.u3 = u3;
     return Status::ok;
   }
 

@@ -17,14 +17,16 @@
 
 namespace adcs {
 
+//! Filled by se3_tracking_error(). Like an Eigen matrix, a default-constructed one is
+//! uninitialised: both laws make one per control step, and zeroing its ~100 doubles first cost
+//! memset calls on the Cortex-M7 (issue 7 budget).
 struct Se3TrackingError {
-  Vec6 eta = Vec6::Zero();         //!< η = [θ; β] [rad; m]
-  Vec6 xi_e = Vec6::Zero();        //!< ξ_e = [ω_e; v_e] [rad/s; m/s], body
-  Vec6 eta_dot = Vec6::Zero();     //!< η̇ = G(η) ξ_e
-  Mat6 G = Mat6::Identity();       //!< G(η)
-  Mat6 G_inv = Mat6::Identity();   //!< G(η)⁻¹
-  Vec6 G_dot_xi_e = Vec6::Zero();  //!< Ġ ξ_e along η̇
-  Vec6 F0 = Vec6::Zero();          //!< nominal drift of ξ_e (11) [rad/s²; m/s²]
+  Vec6 eta;         //!< η = [θ; β] [rad; m]
+  Vec6 xi_e;        //!< ξ_e = [ω_e; v_e] [rad/s; m/s], body
+  Vec6 eta_dot;     //!< η̇ = G(η) ξ_e
+  Se3GBlocks G;     //!< G(η) and G(η)⁻¹ as blocks (G.times, G.inverse_times, …)
+  Vec6 G_dot_xi_e;  //!< Ġ ξ_e along η̇
+  Vec6 F0;          //!< nominal drift of ξ_e (11) [rad/s²; m/s²]
 };
 
 //! The tracking error of the chaser state x w.r.t. the desired state d under the nominal model
@@ -37,32 +39,30 @@ struct Se3TrackingError {
       !all_finite(d.C_ND) || !all_finite(d.R_N) || !all_finite(d.xi()) || !all_finite(d.xi_dot()))
     return Status::non_finite_input;
   if (!(x.R_N.norm() >= kOrbitMinRadius)) return Status::out_of_range;
-  Se3TrackingError e;
+  // Locals, not a Se3TrackingError: its zero-initialised members cost memset calls on the
+  // Cortex-M7 (issue 7 budget), and `out` is written only when everything is finite.
   Se3 g_e;
   g_e.C = d.C_ND.transpose() * x.C_NB;             // C_e = C_dᵀ C
   g_e.R = d.C_ND.transpose() * (x.R_N - d.R_N);    // R_e = C_dᵀ (R − R_d)
-  const Mat6 Ad_inv = se3_Ad_inv(g_e);
-  const Vec6 xi_d_e = Ad_inv * d.xi();             // Ad_{g_e⁻¹} ξ_d
-  Vec6 xi;
-  xi << x.omega_BN_B, x.v_B;
-  e.xi_e = xi - xi_d_e;                            // spec §A.2.3
-  e.eta = se3_log(g_e);
-  e.G = se3_G(e.eta);
-  e.G_inv = se3_G_inv(e.eta);
-  e.eta_dot = e.G * e.xi_e;                        // (8)
-  e.G_dot_xi_e = se3_G_dot_xi(e.eta, e.eta_dot, e.xi_e);
+  const Vec6 xi_d_e = se3_Ad_inv_times(g_e, d.xi());  // Ad_{g_e⁻¹} ξ_d
+  const Vec6 xi_e = x.xi() - xi_d_e;               // spec §A.2.3
+  // η = log(g_e)^∨, G, G⁻¹, η̇ = G ξ_e (8) and Ġ ξ_e in one pass (shared coefficients).
+  const Se3ErrorKinematics k = se3_error_kinematics(g_e, xi_e);
   const Se3SpacecraftParams& p0 = nominal.params();
   const Vec3& w = x.omega_BN_B;
   Vec6 rhs = nominal.gravity_wrench(x);            // M_g(J0, m0)
   rhs.head<3>() -= w.cross(p0.J_B * w);            // ad*_ξ Ξ0 ξ = [−ω×J0ω; −m0 ω×v]
   rhs.tail<3>() -= p0.m * w.cross(x.v_B);
-  e.F0.head<3>() = nominal.J_inv() * rhs.head<3>();
-  e.F0.tail<3>() = rhs.tail<3>() / p0.m;
-  e.F0 += se3_ad(e.xi_e) * xi_d_e - Ad_inv * d.xi_dot();  // (11)
-  if (!all_finite(e.eta) || !all_finite(e.G) || !all_finite(e.G_inv) || !all_finite(e.G_dot_xi_e) ||
-      !all_finite(e.F0))
+  Vec6 F0 = stack3(nominal.J_inv() * rhs.head<3>(), rhs.tail<3>() / p0.m);
+  F0 += se3_ad_times(xi_e, xi_d_e) - se3_Ad_inv_times(g_e, d.xi_dot());  // (11)
+  if (!all_finite(k.eta) || !k.G.finite() || !all_finite(k.G_dot_xi) || !all_finite(F0))
     return Status::out_of_range;
-  out = e;
+  out.eta = k.eta;
+  out.xi_e = xi_e;
+  out.eta_dot = k.eta_dot;
+  out.G = k.G;
+  out.G_dot_xi_e = k.G_dot_xi;
+  out.F0 = F0;
   return Status::ok;
 }
 
@@ -76,16 +76,12 @@ struct Se3TrackingError {
 
 //! Ξ0 x for Ξ0 = diag(J0, m0 I3).
 inline Vec6 se3_apply_inertia(const Se3SpacecraftParams& p, const Vec6& x) noexcept {
-  Vec6 y;
-  y << p.J_B * x.head<3>(), p.m * x.tail<3>();
-  return y;
+  return stack3(p.J_B * x.head<3>(), p.m * x.tail<3>());
 }
 
 //! Ξ0⁻¹ y for Ξ0 = diag(J0, m0 I3), with the model's J0⁻¹.
 inline Vec6 se3_apply_inverse_inertia(const Se3Spacecraft& model, const Vec6& y) noexcept {
-  Vec6 x;
-  x << model.J_inv() * y.head<3>(), y.tail<3>() / model.params().m;
-  return x;
+  return stack3(model.J_inv() * y.head<3>(), y.tail<3>() / model.params().m);
 }
 
 }  // namespace adcs

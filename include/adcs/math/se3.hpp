@@ -15,6 +15,7 @@
 // non-finite output (tested for every entry), so a caller that checks all_finite() on its result
 // catches them. so3_log() needs an explicit check for that: Shepperd's method maps an infinite
 // diagonal entry to q = (Inf, 0, 0, 0), i.e. a finite θ = 0.
+#include <cmath>
 #include <limits>
 
 #include "adcs/core/types.hpp"
@@ -117,6 +118,52 @@ inline double se3_gamma_rate(double phi) noexcept {
   return (8.0 - 3.0 * w2 - 3.0 * k - 2.0 * w2 * k) / (p2 * p2 * p2);
 }
 
+//! Every φ-dependent coefficient above at one φ, from one sin/cos pair of φ/2 and one sin φ
+//! instead of the ~15 sin/tan calls the separate functions make when a control step needs G, G⁻¹,
+//! Ġ ξ and log together (each newlib sin/tan is hundreds of Cortex-M7 instructions; issue 7
+//! budget). Same formulas and switches as the single functions: the series branches are the
+//! very same expressions; the closed forms write tan(φ/2) as sin/cos, which moves α and γ by a
+//! few ulp × their own cancellation factor (α ≲ 24ε/φ², γ ≲ 1e3ε/φ⁴ relative, see se3_gamma),
+//! tested against the single functions in tests/math/test_se3.cpp.
+struct Se3ExpCoordCoefficients {
+  double phi = 0.0;                   //!< φ = ‖θ‖ [rad]
+  double one_minus_cos = 0.5;         //!< (1 − cos φ)/φ²
+  double phi_minus_sin = 1.0 / 6.0;   //!< (φ − sin φ)/φ³
+  double alpha = 1.0 / 12.0;          //!< α(φ)
+  double gamma = 1.0 / 360.0;         //!< γ(φ)
+  double gamma_rate = 1.0 / 3780.0;   //!< γ'(φ)/φ
+};
+
+inline Se3ExpCoordCoefficients se3_exp_coord_coefficients(double phi) noexcept {
+  Se3ExpCoordCoefficients k;
+  k.phi = phi;
+  if (std::abs(phi) < kExpCoordSeriesSwitch) {  // series only: no trig at all
+    k.gamma_rate = se3_gamma_rate(phi);
+    k.one_minus_cos = so3_coeff_one_minus_cos(phi);
+    k.phi_minus_sin = so3_coeff_phi_minus_sin(phi);
+    k.alpha = se3_alpha(phi);
+    k.gamma = se3_gamma(phi);
+    return k;
+  }
+  const double p2 = phi * phi;
+  const double h = 0.5 * phi;
+  const double s = std::sin(h);
+  const double c = std::cos(h);
+  const double sinc_h = s / h;                                 // sin(φ/2)/(φ/2)
+  const double h_cot_h = h * c / s;                            // (φ/2) cot(φ/2)
+  k.one_minus_cos = 0.5 * sinc_h * sinc_h;                     // as so3_coeff_one_minus_cos
+  k.phi_minus_sin = (phi - std::sin(phi)) / (p2 * phi);        // as so3_coeff_phi_minus_sin
+  k.alpha = (1.0 - h_cot_h) / p2;                              // as se3_alpha
+  k.gamma = -2.0 / (p2 * p2) + c / (2.0 * s * p2 * phi) + 1.0 / (4.0 * p2 * s * s);  // as se3_gamma
+  if (std::abs(phi) < kGammaRateSeriesSwitch) {                // as se3_gamma_rate
+    k.gamma_rate = se3_gamma_rate(phi);                        // its series: no trig
+  } else {
+    const double w2 = 1.0 / (sinc_h * sinc_h);
+    k.gamma_rate = (8.0 - 3.0 * w2 - 3.0 * h_cot_h - 2.0 * w2 * h_cot_h) / (p2 * p2 * p2);
+  }
+  return k;
+}
+
 // =============================================================================================
 // The group SE(3) and its algebra. spec §A.2.1
 
@@ -174,6 +221,19 @@ inline Mat6 se3_Ad_inv(const Se3& g) noexcept {
   Mat6 m;
   m << Ct, Mat3::Zero(), -(Ct * skew(g.R)), Ct;
   return m;
+}
+
+//! Ad_{g⁻¹} x = [Cᵀ x_ω; Cᵀ (x_v − R × x_ω)], the product without the 6×6 matrix.
+inline Vec6 se3_Ad_inv_times(const Se3& g, const Vec6& x) noexcept {
+  const Vec3 xw = x.head<3>();
+  return stack3(g.C.transpose() * xw, g.C.transpose() * (x.tail<3>() - g.R.cross(xw)));
+}
+
+//! ad_ξ x = [ω × x_ω; v × x_ω + ω × x_v], the product without the 6×6 matrix.
+inline Vec6 se3_ad_times(const Vec6& xi, const Vec6& x) noexcept {
+  const Vec3 w = xi.head<3>();
+  const Vec3 xw = x.head<3>();
+  return stack3(w.cross(xw), xi.tail<3>().cross(xw) + w.cross(x.tail<3>()));
 }
 
 //! ad_ξ = [[ω×, 0], [v×, ω×]]. spec §A.2.1
@@ -329,6 +389,119 @@ inline Mat6 se3_G_dot(const Vec6& eta, const Vec6& eta_dot) noexcept {
 //! controller's ż₂, spec §A.5). Closed form, no finite difference.
 inline Vec6 se3_G_dot_xi(const Vec6& eta, const Vec6& eta_dot, const Vec6& xi) noexcept {
   return se3_G_dot(eta, eta_dot) * xi;
+}
+
+// =============================================================================================
+// The whole error kinematics of one control step, spec §A.2.3-§A.5, at the cost of a few cross
+// products: a law needs log(g_e), G, G⁻¹, η̇ = G ξ_e and Ġ ξ_e at the same η. The functions
+// above build every 3×3 block and multiply them (≈ 25 3×3 products and ~15 trig calls per step);
+// here the coefficients are computed once and T(θ,b) x, Ṫ x are applied as cross products,
+// using (a×)(b×) = b aᵀ − (aᵀb) I for the blocks G and G⁻¹ must hold as matrices.
+// Agreement with se3_G, se3_G_inv, se3_G_dot_xi, se3_log: tests/math/test_se3.cpp.
+
+namespace detail {
+
+//! T(θ,b) x = ½ b×x + α(θ×(b×x) + b×(θ×x)) + γ(θᵀb) θ×(θ×x). spec §A.2.3
+inline Vec3 se3_T_times(const Vec3& theta, const Vec3& b, const Vec3& x, double a, double g) noexcept {
+  const Vec3 tx = theta.cross(x);
+  const Vec3 bx = b.cross(x);
+  return 0.5 * bx + a * (theta.cross(bx) + b.cross(tx)) + (g * theta.dot(b)) * theta.cross(tx);
+}
+
+//! Ṫ x along (θ̇, β̇), the se3_T_dot() formula applied to x term by term.
+inline Vec3 se3_T_dot_times(const Vec3& theta, const Vec3& beta, const Vec3& theta_dot, const Vec3& beta_dot,
+                            const Vec3& x, const Se3ExpCoordCoefficients& k) noexcept {
+  const double a = k.alpha, g = k.gamma;
+  const double tb = theta.dot(beta), ttd = theta.dot(theta_dot);
+  const Vec3 tx = theta.cross(x), bx = beta.cross(x), tdx = theta_dot.cross(x);
+  return se3_T_times(theta, beta_dot, x, a, g) + a * (theta_dot.cross(bx) + beta.cross(tdx)) +
+         (g * ttd) * (theta.cross(bx) + beta.cross(tx)) +
+         (k.gamma_rate * ttd * tb + g * theta_dot.dot(beta)) * theta.cross(tx) +
+         (g * tb) * (theta_dot.cross(tx) + theta.cross(tdx));
+}
+
+}  // namespace detail
+
+//! G(η) = [[A, 0], [T, A]] kept as its 3×3 blocks, with A⁻¹ (spec §A.2.3, paper eq. (8)): a
+//! law only multiplies vectors by G, Gᵀ and G⁻¹, and the block-triangular form does each in
+//! 2-3 3×3 products instead of a dense 6×6 product or an explicit −A⁻¹TA⁻¹.
+//! Like an Eigen matrix, a default-constructed one is uninitialised (identity() gives G(0) = I):
+//! se3_error_kinematics() writes every block, and zeroing them first would cost memset calls
+//! in every control step on the Cortex-M7 (issue 7 budget).
+struct Se3GBlocks {
+  Mat3 A;      //!< A(θ), both diagonal blocks
+  Mat3 T;      //!< T(θ, β), the lower-left block
+  Mat3 A_inv;  //!< A(θ)⁻¹ = V(θ)ᵀ
+
+  static Se3GBlocks identity() noexcept { return Se3GBlocks{Mat3::Identity(), Mat3::Zero(), Mat3::Identity()}; }
+
+  //! G x = [A x_ω; T x_ω + A x_v].
+  Vec6 times(const Vec6& x) const noexcept {
+    const Vec3 xw = x.head<3>();
+    return stack3(A * xw, T * xw + A * x.tail<3>());
+  }
+  //! Gᵀ x = [Aᵀ x_ω + Tᵀ x_v; Aᵀ x_v].
+  Vec6 transpose_times(const Vec6& x) const noexcept {
+    const Vec3 xv = x.tail<3>();
+    return stack3(A.transpose() * x.head<3>() + T.transpose() * xv, A.transpose() * xv);
+  }
+  //! G⁻¹ y by block forward substitution: x_ω = A⁻¹ y_ω, x_v = A⁻¹ (y_v − T x_ω).
+  Vec6 inverse_times(const Vec6& y) const noexcept {
+    const Vec3 xw = A_inv * y.head<3>();
+    return stack3(xw, A_inv * (y.tail<3>() - T * xw));
+  }
+  //! G as a dense 6×6 matrix (logging, tests).
+  Mat6 matrix() const noexcept {
+    Mat6 G;
+    G << A, Mat3::Zero(), T, A;
+    return G;
+  }
+  //! G⁻¹ = [[A⁻¹, 0], [−A⁻¹ T A⁻¹, A⁻¹]] as a dense 6×6 matrix (logging, tests).
+  Mat6 inverse_matrix() const noexcept {
+    Mat6 Gi;
+    Gi << A_inv, Mat3::Zero(), -(A_inv * T * A_inv), A_inv;
+    return Gi;
+  }
+  bool finite() const noexcept { return all_finite(A) && all_finite(T) && all_finite(A_inv); }
+};
+
+//! log(g_e) and everything a seed 003 law needs at that η (spec §A.2.3, §A.5, paper (8)).
+//! Only se3_error_kinematics() makes one and it writes every member, so the members have no
+//! default initialisers (see Se3GBlocks).
+struct Se3ErrorKinematics {
+  Vec6 eta;          //!< η = log(g)^∨ = [θ; β] [rad; m]
+  Se3GBlocks G;      //!< G(η) and G(η)⁻¹
+  Vec6 eta_dot;      //!< η̇ = G(η) ξ
+  Vec6 G_dot_xi;     //!< Ġ(η, η̇) ξ
+};
+
+//! se3_log(g), se3_G, se3_G_inv, G ξ and se3_G_dot_xi(η, G ξ, ξ) in one pass.
+inline Se3ErrorKinematics se3_error_kinematics(const Se3& g, const Vec6& xi) noexcept {
+  Se3ErrorKinematics out;
+  const Vec3 theta = so3_log(g.C);
+  const Se3ExpCoordCoefficients k = se3_exp_coord_coefficients(theta.norm());
+  const Vec3 tR = theta.cross(g.R);
+  const Vec3 beta = g.R - 0.5 * tR + k.alpha * theta.cross(tR);  // V(θ)⁻¹ R, spec §A.2.1
+  out.eta = stack3(theta, beta);
+
+  const Mat3 I = Mat3::Identity();
+  const double tb = theta.dot(beta);
+  const Mat3 Th = skew(theta);
+  const Mat3 Th2 = theta * theta.transpose() - theta.squaredNorm() * I;    // (θ×)²
+  const Mat3 ThB_BTh = beta * theta.transpose() + theta * beta.transpose() - 2.0 * tb * I;  // θ×β× + β×θ×
+  out.G.A = I + 0.5 * Th + k.alpha * Th2;                                   // spec §A.2.3
+  out.G.T = 0.5 * skew(beta) + k.alpha * ThB_BTh + (k.gamma * tb) * Th2;
+  out.G.A_inv = I - k.one_minus_cos * Th + k.phi_minus_sin * Th2;          // A⁻¹ = V(θ)ᵀ
+
+  const Vec3 w = xi.head<3>(), v = xi.tail<3>();
+  const Vec3 theta_dot = out.G.A * w;
+  const Vec3 beta_dot = out.G.T * w + out.G.A * v;
+  out.eta_dot = stack3(theta_dot, beta_dot);                                // (8)
+  // Ġ ξ = [Ȧ ω; Ṫ ω + Ȧ v] with Ȧ = T(θ, θ̇), spec §A.5.
+  out.G_dot_xi = stack3(detail::se3_T_times(theta, theta_dot, w, k.alpha, k.gamma),
+                        detail::se3_T_dot_times(theta, beta, theta_dot, beta_dot, w, k) +
+                            detail::se3_T_times(theta, theta_dot, v, k.alpha, k.gamma));
+  return out;
 }
 
 }  // namespace adcs

@@ -6,10 +6,16 @@ namespace adcs {
 
 //! Skew (cross-product) matrix: skew(v) * w == v.cross(w).
 inline Mat3 skew(const Vec3& v) noexcept {
-  Mat3 m;
-  m << 0.0, -v(2), v(1),  //
-      v(2), 0.0, -v(0),   //
-      -v(1), v(0), 0.0;
+  Mat3 m;  // element by element: Eigen's comma initialiser is 9 out-of-line calls on the M7 (-O2)
+  m(0, 0) = 0.0;
+  m(1, 0) = v(2);
+  m(2, 0) = -v(1);
+  m(0, 1) = -v(2);
+  m(1, 1) = 0.0;
+  m(2, 1) = v(0);
+  m(0, 2) = v(1);
+  m(1, 2) = -v(0);
+  m(2, 2) = 0.0;
   return m;
 }
 

@@ -48,9 +48,7 @@ struct Se3SpacecraftState {
 
   //! ξ = [ω; v] [rad/s; m/s].
   Vec6 xi() const noexcept {
-    Vec6 x;
-    x << omega_BN_B, v_B;
-    return x;
+    return stack3(omega_BN_B, v_B);
   }
   //! Inertial velocity in ECI components V_N = C_NB v_B [m/s].
   Vec3 V_N() const noexcept { return C_NB * v_B; }
@@ -65,9 +63,7 @@ struct Se3SpacecraftRates {
 
   //! ξ̇ = [ω̇; v̇].
   Vec6 xi_dot() const noexcept {
-    Vec6 x;
-    x << omega_dot_B, v_dot_B;
-    return x;
+    return stack3(omega_dot_B, v_dot_B);
   }
 };
 
@@ -121,10 +117,8 @@ class Se3Spacecraft {
   //! ‖R_N‖ ≥ kOrbitMinRadius (derivative() checks it).   spec §A.2.2
   Vec6 gravity_wrench(const State& x) const noexcept {
     const Vec3 R_B = x.C_NB.transpose() * x.R_N;  // R_b = Cᵀ R
-    Vec6 M;
-    M << gravity_gradient_torque_B(p_.J_B, R_B, p_.env.mu),
-        point_mass_gravity_force(p_.m, R_B, p_.env.mu) + j2_force_B(p_.m, x.C_NB, x.R_N, p_.env);
-    return M;
+    return stack3(gravity_gradient_torque_B(p_.J_B, R_B, p_.env.mu),
+                  point_mass_gravity_force(p_.m, R_B, p_.env.mu) + j2_force_B(p_.m, x.C_NB, x.R_N, p_.env));
   }
 
   //! (Ṙ, ω̇, v̇) at state x under the control wrench tau_c = [M_c; F_c] and the disturbance
@@ -185,15 +179,11 @@ struct Se3DesiredState {
 
   //! ξ_d = [ω_d; v_d].
   Vec6 xi() const noexcept {
-    Vec6 x;
-    x << omega_DN_D, v_D;
-    return x;
+    return stack3(omega_DN_D, v_D);
   }
   //! ξ̇_d = [ω̇_d; v̇_d].
   Vec6 xi_dot() const noexcept {
-    Vec6 x;
-    x << omega_dot_D, v_dot_D;
-    return x;
+    return stack3(omega_dot_D, v_dot_D);
   }
 };
 
