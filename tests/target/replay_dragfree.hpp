@@ -9,7 +9,8 @@
 //   5. Algorithm 3 fusion per axis (estimate/fusion.hpp).
 // The accelerometer reading depends on this sample's command, so the recorder runs the sample in
 // two halves (step_a: 1-3, step_b: 4-5); step() is both, and is what the replay and the cost
-// measure. Filter parameters as DragFreeConfig::eskf()/esf() of the scenario.
+// measure. Cost stages (replay_system.hpp): predict (1), eskf_update (2), adrc_step (3),
+// esf_update_fuse (4-5). Filter parameters as DragFreeConfig::eskf()/esf() of the scenario.
 #include <cmath>
 
 #include "adcs/control/adrc.hpp"
@@ -25,6 +26,9 @@ class DragFreeSystem {
   // Row: Y (9: φ_sc, r_rel, φ_rel sensors), y_c (3: saturated accelerometers), φ_cmd (3).
   static constexpr int kInputWidth = 15;
   static constexpr int kCommandSize = 9, kParts = 2;
+  static constexpr int kCostStages = 4;
+  static constexpr const char* kStageNames[kCostStages] = {"predict", "eskf_update", "adrc_step",
+                                                           "esf_update_fuse"};
   static constexpr double kPeriod = 0.1;  // [s] h, DragFreeParams default (seed 004 §4)
   // Comparison scales (replay_system.hpp, Column): per group of like outputs, a power of ten at
   // or below the smallest of their largest |value|s over the recorded run, so that the 1e-12
@@ -112,32 +116,23 @@ class DragFreeSystem {
     return adcs::worst(s, adrc_.status());
   }
 
-  //! Steps 1-3 (uses row[0..8] and row[12..14]).
-  void step_a(const double* row) noexcept {
-    using adcs::Status;
-    st_predict_ = Status::ok;
-    if (started_) {
-      st_predict_ = alg1_.predict(u_);  // u_ still holds u_{k-1}
-      for (int j = 0; j < 3; ++j) st_predict_ = adcs::worst(st_predict_, alg2_[j].predict(u_(3 + j)));
-    }
-    started_ = true;
-    st_update_ = alg1_.update(adcs::Vec<9>::Map(row));
-    const adcs::Vec3 F_hat(alg2_[0].state()(2), alg2_[1].state()(2), alg2_[2].state()(2));
-    st_adrc_ = adrc_.step(alg1_.state(), F_hat, adcs::Vec3::Map(row + 12), u_);
+  //! The first n cost stages (kStageNames) of step(), in its order. noinline: every cost prefix
+  //! (step_prefix_on<S, n>) and the whole step then run this same code, so stage boundaries are
+  //! exact rather than shifted by each wrapper's own inlining.
+  __attribute__((noinline)) void step_stages(int n, const double* row) noexcept {
+    predict();
+    if (n < 2) return;
+    eskf_update(row);
+    if (n < 3) return;
+    adrc_step(row);
+    if (n < 4) return;
+    esf_update_fuse(row);
   }
-  //! Steps 4-5 (uses row[9..11]).
-  void step_b(const double* row) noexcept {
-    st_alg2_ = adcs::Status::ok;
-    st_fuse_ = adcs::Status::ok;
-    for (int j = 0; j < 3; ++j) {
-      st_alg2_ = adcs::worst(st_alg2_, alg2_[j].update(row[9 + j], u_(3 + j)));
-      st_fuse_ = adcs::worst(st_fuse_, adcs::fuse_axis(alg1_, alg2_[j], j));
-    }
-  }
-  void step(const double* row) noexcept {
-    step_a(row);
-    step_b(row);
-  }
+  //! Steps 1-3 (uses row[0..8] and row[12..14]): cost stages 1-3.
+  void step_a(const double* row) noexcept { step_stages(3, row); }
+  //! Steps 4-5 (uses row[9..11]): cost stage 4 alone, after step_a.
+  void step_b(const double* row) noexcept { esf_update_fuse(row); }
+  void step(const double* row) noexcept { step_stages(kCostStages, row); }
   void step_part(int part, const double* row) noexcept {
     if (part == 0)
       step_a(row);
@@ -164,6 +159,32 @@ class DragFreeSystem {
   }
 
  private:
+  //! Stage 1 (step 1): the predictions with u_{k-1}.
+  void predict() noexcept {
+    st_predict_ = adcs::Status::ok;
+    if (started_) {
+      st_predict_ = alg1_.predict(u_);  // u_ still holds u_{k-1}
+      for (int j = 0; j < 3; ++j) st_predict_ = adcs::worst(st_predict_, alg2_[j].predict(u_(3 + j)));
+    }
+    started_ = true;
+  }
+  //! Stage 2 (step 2): Algorithm 1 update with Y = row[0..8].
+  void eskf_update(const double* row) noexcept { st_update_ = alg1_.update(adcs::Vec<9>::Map(row)); }
+  //! Stage 3 (step 3): ADRC with φ_cmd = row[12..14].
+  void adrc_step(const double* row) noexcept {
+    const adcs::Vec3 F_hat(alg2_[0].state()(2), alg2_[1].state()(2), alg2_[2].state()(2));
+    st_adrc_ = adrc_.step(alg1_.state(), F_hat, adcs::Vec3::Map(row + 12), u_);
+  }
+  //! Stage 4 (steps 4-5): Algorithm 2 updates with y_c = row[9..11], fusion.
+  void esf_update_fuse(const double* row) noexcept {
+    st_alg2_ = adcs::Status::ok;
+    st_fuse_ = adcs::Status::ok;
+    for (int j = 0; j < 3; ++j) {
+      st_alg2_ = adcs::worst(st_alg2_, alg2_[j].update(row[9 + j], u_(3 + j)));
+      st_fuse_ = adcs::worst(st_fuse_, adcs::fuse_axis(alg1_, alg2_[j], j));
+    }
+  }
+
   adcs::Status build_status_;
   adcs::DragFreeEskf alg1_;
   adcs::SaturatedEsf alg2_[3];

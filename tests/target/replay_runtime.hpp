@@ -11,9 +11,12 @@
 //   <k> <value> ...                      exact columns as integers, the others as %a hex floats
 //   # done steps=<N>
 // Cost mode (argument "cost", target only, QEMU -icount shift=0) adds "# tick_check ...",
-// "# calibration ..." and " icount=<n> direct=<m>" at the end of each step line: n = instructions
-// of the step() call (CostMeter below), m = the same call read directly off SysTick, quantised to
-// 40 instructions (a cross-check of n).
+// "# calibration ...", "# stages <name> ..." and " icount=<n> direct=<m>" at the end of each step
+// line: n = instructions of the step() call (CostMeter below), m = the same call read directly off
+// SysTick, quantised to 40 instructions (a cross-check of n). A System whose step() has stages
+// (replay_system.hpp: kCostStages = N > 1) adds " prefix=<c1>,...,<c(N-1)>" after direct=: ci =
+// instructions of its first i stages alone (step_stages(i, row)), measured like n; stage i costs
+// ci - c(i-1) (c0 = 0), the last stage n - c(N-1).
 //
 // The hex float is formatted here, not by printf: newlib-nano's printf has no %a, and printing
 // the same digits with the same code on both sides leaves the comparison to the numbers alone.
@@ -22,6 +25,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <type_traits>
+#include <utility>
 
 #include "adcs/core/status.hpp"
 #include "replay_system.hpp"
@@ -164,6 +169,28 @@ template <class S>
 __attribute__((noinline)) void step_none(S& s, const double* row) noexcept {
   __asm volatile("" ::"r"(&s), "r"(row) : "memory");
 }
+//! The first N stages of System::step() alone (cost mode, N < kCostStages): what step_on is to the
+//! whole step, with N a constant so that the later stages are compiled out as in a shorter step().
+template <class S, int N>
+__attribute__((noinline)) void step_prefix_on(S& s, const double* row) noexcept {
+  s.step_stages(N, row);
+}
+
+//! The stages of System S's step() (replay_system.hpp): S::kCostStages and S::kStageNames when S
+//! declares them, else one stage, "step".
+template <class S, class = void>
+struct StagesOf {
+  static constexpr int kCount = 1;
+  static constexpr const char* kNames[1] = {"step"};
+};
+template <class S>
+struct StagesOf<S, std::void_t<decltype(S::kCostStages)>> {
+  static constexpr int kCount = S::kCostStages;
+  static constexpr const char* const* kNames = S::kStageNames;
+  static_assert(kCount >= 2 && kCount <= kMaxCostStages, "kCostStages: 2 .. kMaxCostStages");
+  static_assert(sizeof(S::kStageNames) / sizeof(S::kStageNames[0]) == static_cast<std::size_t>(kCount),
+                "kStageNames needs kCostStages names");
+};
 
 #ifdef ADCS_REPLAY_TARGET
 //! Instructions of one step_on(sys, row) call, from its first instruction to its return
@@ -175,6 +202,8 @@ __attribute__((noinline)) void step_none(S& s, const double* row) noexcept {
 //! overhead c = copy_loop_call + 1 (an integer, recovered exactly from the 2000-iteration
 //! difference) and the fixed part; then for each row, with fn = step_on and R = kReps:
 //!   count = (T(kReps) - fixed) / kReps - c + 1.
+//! measure_prefix(n) counts fn = step_prefix_on<S, n> (the first n stages of the step) the same
+//! way, on a copy of the same state with the same row.
 // Every repetition executes the same instructions (same state, same row); SysTick's quantisation
 // (one tick = 40 instructions) leaves +-1 on the count from T(kReps) and +-1 from the fixed
 // part's estimate: +-2 instructions per step at most.
@@ -232,9 +261,21 @@ struct CostMeter {
     return t > 0 && insns_per_tick == 40;
   }
 
-  static long long measure(const S& live, const double* row) {
-    const long long t = loop_ticks(live, row, kReps, step_on<S>) * insns_per_tick;
+  static long long measure_fn(const S& live, const double* row, void (*fn)(S&, const double*)) {
+    const long long t = loop_ticks(live, row, kReps, fn) * insns_per_tick;
     return div_round(t - fixed, kReps) - per_iteration + 1;
+  }
+  static long long measure(const S& live, const double* row) { return measure_fn(live, row, step_on<S>); }
+
+  //! Instructions of the first n stages of the step (1 <= n < StagesOf<S>::kCount), else -1.
+  static long long measure_prefix(const S& live, const double* row, int n) {
+    return measure_prefix_of(live, row, n, std::make_integer_sequence<int, StagesOf<S>::kCount - 1>{});
+  }
+  template <int... I>
+  static long long measure_prefix_of(const S& live, const double* row, int n, std::integer_sequence<int, I...>) {
+    using Fn = void (*)(S&, const double*);
+    static constexpr Fn kPrefix[] = {nullptr, &step_prefix_on<S, I + 1>...};  // [n]: first n stages
+    return n >= 1 && n < StagesOf<S>::kCount ? measure_fn(live, row, kPrefix[n]) : -1;
   }
 };
 #endif
@@ -250,15 +291,17 @@ struct ApiOf {
 #ifdef ADCS_REPLAY_TARGET
   static bool calibrate(const double* row, char* report) { return CostMeter<S>::calibrate(*P, row, report); }
   static long long measure(const double* row) { return CostMeter<S>::measure(*P, row); }
+  static long long measure_prefix(int n, const double* row) { return CostMeter<S>::measure_prefix(*P, row, n); }
 #endif
   static constexpr Api make() {
     return Api{S::kName, S::kInputWidth, S::kPeriod, S::kColumns,
                static_cast<int>(sizeof(S::kColumns) / sizeof(Column)), S::kCommandSize, S::kParts,
                &init_status, &step, &step_part, &outputs, &command,
+               StagesOf<S>::kCount, StagesOf<S>::kNames,
 #ifdef ADCS_REPLAY_TARGET
-               &calibrate, &measure
+               &calibrate, &measure, &measure_prefix
 #else
-               nullptr, nullptr
+               nullptr, nullptr, nullptr
 #endif
     };
   }
@@ -324,13 +367,24 @@ inline int run(const Api& api, int argc, char** argv, const double* rows, int wi
     emit(line, put_str(line, "# error: SysTick does not count 1 per 40 instructions: run QEMU with -icount shift=0\n"));
     return 3;
   }
-  if (cost) std::fputs(line, stdout);
+  if (cost) {
+    std::fputs(line, stdout);
+    p = put_str(line, "# stages");
+    for (int i = 0; i < api.cost_stages; ++i) {
+      *p++ = ' ';
+      p = put_str(p, api.stage_names[i]);
+    }
+    *p++ = '\n';
+    emit(line, p);
+  }
   for (int k = 0; k < steps; ++k) {
     const double* row = rows + static_cast<long>(k) * width;
     long long icount = -1, direct = -1;
+    long long prefix[kMaxCostStages] = {};  // [i]: instructions of the first i + 1 stages
 #ifdef ADCS_REPLAY_TARGET
     if (cost) {
       icount = api.measure(row);
+      for (int i = 0; i + 1 < api.cost_stages; ++i) prefix[i] = api.measure_prefix(i + 1, row);
       const std::uint32_t a = systick_now();
       api.step(row);
       direct = static_cast<long long>(ticks_between(a, systick_now())) * 40;  // quantised cross-check
@@ -351,6 +405,10 @@ inline int run(const Api& api, int argc, char** argv, const double* rows, int wi
       p = put_int(p, icount);
       p = put_str(p, " direct=");
       p = put_int(p, direct);
+      for (int i = 0; i + 1 < api.cost_stages; ++i) {
+        p = put_str(p, i == 0 ? " prefix=" : ",");
+        p = put_int(p, prefix[i]);
+      }
     }
     *p++ = '\n';
     emit(line, p);

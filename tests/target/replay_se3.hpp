@@ -3,7 +3,9 @@
 // of src/scenarios/se3_loop.cpp with its defaults (state 1, quantize = 1): the desired state from
 // the target's state (se3_desired_state, as BM_SE3PrescribedTime_Step), the BsPdTC law with the
 // spec Table 1 gains, then sat -> Q (saturate_then_quantize, seed 003 quantizer). Inputs: the
-// chaser's and the target's states as the loop hands them to the controller.
+// chaser's and the target's states as the loop hands them to the controller. Cost stages
+// (replay_system.hpp): desired_state, controller_step (the law alone: the issue's "controller
+// step()"), saturate_quantize.
 #include "adcs/actuator/quantizer.hpp"
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
@@ -19,6 +21,9 @@ class Se3System {
   // Row: chaser C_NB (9, column-major), R_N (3), ω (3), v_B (3); target the same (18).
   static constexpr int kInputWidth = 36;
   static constexpr int kCommandSize = 6, kParts = 1;
+  static constexpr int kCostStages = 3;
+  static constexpr const char* kStageNames[kCostStages] = {"desired_state", "controller_step",
+                                                           "saturate_quantize"};
   static constexpr double kPeriod = 0.125;  // [s] 8 Hz, Se3ScenarioParams::control_period (GIVEN)
   // Comparison scales (replay_system.hpp, Column): per group of like outputs, a power of ten at
   // or below the smallest of their largest |value|s over the recorded run, so that the 1e-12
@@ -56,12 +61,14 @@ class Se3System {
     return law_.status();
   }
 
-  void step(const double* row) noexcept {
-    const State x = get(row), o = get(row + 18);
-    adcs::Se3DesiredState d;
-    status_desired_ = adcs::se3_desired_state(target_model_, o, sp_, d);
-    if (status_desired_ != adcs::Status::ok) return;  // command held (ZOH of the last one)
-    status_law_ = law_.step(x, d, u_);
+  void step(const double* row) noexcept { step_stages(kCostStages, row); }
+  //! The first n stages of step() (cost mode). The desired state is a member, not a local, so
+  //! that the first stage alone is not dead code.
+  void step_stages(int n, const double* row) noexcept {
+    status_desired_ = adcs::se3_desired_state(target_model_, get(row + 18), sp_, desired_);
+    if (n < 2 || status_desired_ != adcs::Status::ok) return;  // not ok: command held (ZOH of the last one)
+    status_law_ = law_.step(get(row), desired_, u_);
+    if (n < 3) return;
     status_quant_ = adcs::saturate_then_quantize<6>(u_, limit_, quantizer_, u_c_);
   }
 
@@ -96,6 +103,7 @@ class Se3System {
   Controller law_;
   adcs::CompositeQuantizer<6> quantizer_;
   adcs::Vec6 limit_;
+  adcs::Se3DesiredState desired_{};  //!< of the last tick
   adcs::Vec6 u_ = adcs::Vec6::Zero(), u_c_ = adcs::Vec6::Zero();
   adcs::Status status_desired_ = adcs::Status::ok, status_law_ = adcs::Status::ok,
                status_quant_ = adcs::Status::ok;

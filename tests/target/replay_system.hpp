@@ -12,6 +12,11 @@
 //   void step_part(int part, const double* row) noexcept; the sample in kParts pieces (recorder)
 //   void outputs(double* values) const noexcept;         kColumns values after the last step
 //   void command(double* u) const noexcept;              the command the loop applies (recorder)
+// and optionally, for a per-stage cost (replay_runtime.hpp, CostMeter; without them: one stage):
+//   static constexpr int kCostStages = N;                 2 <= N <= kMaxCostStages
+//   static constexpr const char* kStageNames[N];          one word each
+//   void step_stages(int n, const double* row) noexcept;  the first n stages of step() only;
+//                                                        step(row) is step_stages(N, row)
 #include "adcs/core/status.hpp"
 
 namespace replay {
@@ -23,6 +28,8 @@ struct Column {
   const char* name;
   double scale;
 };
+
+constexpr int kMaxCostStages = 4;
 
 struct Api {
   const char* name;
@@ -37,9 +44,13 @@ struct Api {
   void (*step_part)(int part, const double* row);  //!< recorder: parts 0..parts-1 = one step()
   void (*outputs)(double* values);
   void (*command)(double* u);
+  int cost_stages;                //!< stages of step() measured separately (1: step() as a whole)
+  const char* const* stage_names;  //!< cost_stages names
   //! Target cost mode (replay_runtime.hpp, CostMeter); null on the host.
   bool (*calibrate)(const double* row, char* report);
   long long (*measure)(const double* row);
+  //! Target cost mode: instructions of the first n stages (1 <= n < cost_stages); null on the host.
+  long long (*measure_prefix)(int n, const double* row);
 };
 
 // Defined by the cores replay_<name>.cpp.
