@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Line coverage of the flight library (include/adcs/) by the whole ctest suite: configures,
-# builds and tests the "coverage" preset of CMakePresets.json (g++ --coverage -O0 -g, Debug,
-# bench and the Cortex-M7 check off), then gcovr 5.2 keeps include/adcs/ only.
+# builds and tests the "coverage" preset of CMakePresets.json (g++ --coverage -O0, Debug
+# without -g: gcov needs no debug info, and -g made one Eigen-heavy test file 2.6x slower to
+# compile; bench and the Cortex-M7 check off), then gcovr 5.2 keeps include/adcs/ only.
 #   stdout:                         text report (every header) and the total
 #   build-coverage/coverage.txt     the same text report
 #   build-coverage/coverage/        HTML report with annotated sources (index.html)

@@ -1,10 +1,24 @@
 #!/usr/bin/env bash
-# The whole ctest suite under AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (g++):
-# every unit, property, scenario, no-allocation, CLI and install-consumer test, with any sanitizer
-# report fatal (halt_on_error, -fno-sanitize-recover=undefined).
-#   -O1: the usual ASan compromise (-O0 makes the CVODE scenario tests ~3x slower, -O2 hides
-#        fewer bugs but costs build time); Debug build type so Eigen's own asserts (bounds,
-#        sizes) are armed too.
+# The whole ctest suite under AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer
+# (clang++-14), plus the libFuzzer harnesses (ADCS_FUZZ=ON: ctest label fuzz, each for its fixed
+# number of inputs, tests/fuzz/CMakeLists.txt): every unit, property, scenario, no-allocation,
+# CLI and install-consumer test, with any sanitizer report fatal (halt_on_error,
+# -fno-sanitize-recover=undefined). Called by tools/run-tests.sh after the Release suite.
+#   clang++-14, not g++: the same -O1 ASan+UBSan build of the Eigen-heavy tests compiles ~3-4x
+#        faster (measured per translation unit: g++ -O1 -g 138 s, clang++ -O1 -g 36 s), which is
+#        what lets the suite run in CI; it also puts a second compiler's warnings (-Werror) on
+#        every file.
+#   -O2: the closed-loop scenario tests run 10^5-10^6 controller steps each; at -O1 they were
+#        ~30x slower than the Release build.
+#   UBSan: in full on the unit tests and the fuzzers (they reach every header); the ground code
+#        (src/ and the sim tests: the closed loops) leaves out the pointer checks (alignment,
+#        null, object-size, pointer-overflow, vptr, function; ADCS_GROUND_COMPILE_OPTIONS), which
+#        made its Eigen code ~9x slower than ASan alone (33 CPU-minutes for the sim suite, on a
+#        45-minute CI); the arithmetic checks (overflow, float-cast, shifts, division, bounds,
+#        bool/enum, return/unreachable) stay on everywhere.
+#   -gline-tables-only (as CMAKE_CXX_FLAGS_DEBUG): file:line in every report without full
+#        debug info; Debug build type otherwise, so NDEBUG stays undefined and Eigen's own
+#        asserts (bounds, sizes) are armed too.
 #   Bench and the Cortex-M7 check are off: neither runs host code under test.
 # Nothing is excluded: the install consumer only installs headers and compiles a 14-line main
 # with the default flags, cli_contract runs the ASan-built adcs-sim on 2 s scenarios, and
@@ -15,12 +29,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-"$root/build-asan"}
 jobs=$(nproc 2>/dev/null || echo 2)
-# Flags live in CMakePresets.json (preset "asan"): g++ -O1 -fsanitize=address,undefined
-# -fno-omit-frame-pointer -fno-sanitize-recover=undefined, Debug, bench and target check off.
-# -Wno-error=maybe-uninitialized there: GCC's manual (Instrumentation Options) warns that
-# sanitizers raise the rate of false-positive -Wmaybe-uninitialized and advises against -Werror
-# with them; g++ 12 at -O1 flags Eigen's debug-mode aliasing check in math/se3.hpp. It stays a
-# warning here, and an error in the Release build.
+# Flags live in CMakePresets.json (preset "asan").
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 t0=$(date +%s)

@@ -21,8 +21,9 @@ pkgs=(
   libnewlib-arm-none-eabi
   libstdc++-arm-none-eabi-newlib
   qemu-system-arm              # runs the Cortex-M7 replay programs (mps2-an500) from ctest
-  clang-14                     # libFuzzer harnesses (-fsanitize=fuzzer)
-  libclang-rt-14-dev           #   and its runtime
+  clang-14                     # libFuzzer harnesses (-fsanitize=fuzzer) and the ASan+UBSan suite
+  libclang-rt-14-dev           #   and their sanitizer runtimes
+  libomp-14-dev                #   OpenMP for clang: SUNDIALS' CMake config requires it
   gcovr                        # coverage preset (lines of include/adcs)
   valgrind                     # callgrind instruction counts per step (tools/callgrind-counts.sh)
 )

@@ -324,7 +324,7 @@ struct ExpmSize {
 template <class S>
 class Expm : public ::testing::Test {};
 using ExpmSizes = ::testing::Types<ExpmSize<1>, ExpmSize<2>, ExpmSize<3>, ExpmSize<6>, ExpmSize<36>>;
-TYPED_TEST_SUITE(Expm, ExpmSizes);
+TYPED_TEST_SUITE(Expm, ExpmSizes, );  // trailing empty argument: clang -Wpedantic needs one for "..."
 
 TYPED_TEST(Expm, ZeroGivesIdentityExactly) { zero_gives_identity_exactly(TypeParam::ops()); }
 TYPED_TEST(Expm, MatchesEigenMatrixFunctionsOnEveryBranch) {

@@ -402,7 +402,7 @@ struct Shape {
 template <class S>
 class Pinv : public ::testing::Test {};
 using PinvShapes = ::testing::Types<Shape<3, 4>, Shape<3, 7>, Shape<2, 5>>;
-TYPED_TEST_SUITE(Pinv, PinvShapes);
+TYPED_TEST_SUITE(Pinv, PinvShapes, );  // trailing empty argument: clang -Wpedantic needs one for "..."
 
 TYPED_TEST(Pinv, ExactInverseIsTheMinimumNormSolution) {
   Rng rng(TypeParam::seed + 1);
@@ -539,7 +539,7 @@ void random_hurwitz_residual_spd(LyapFn solve, Eigen::Index n, Rng& rng) {
 template <class S>
 class LyapunovRandom : public ::testing::Test {};
 using LyapunovSizes = ::testing::Types<Size<2>, Size<6>, Size<12>>;
-TYPED_TEST_SUITE(LyapunovRandom, LyapunovSizes);
+TYPED_TEST_SUITE(LyapunovRandom, LyapunovSizes, );  // trailing empty argument: clang -Wpedantic needs one for "..."
 
 TYPED_TEST(LyapunovRandom, ResidualSymmetryAndPositiveDefiniteness) {
   Rng rng(0xB100 + TypeParam::n);
@@ -686,7 +686,7 @@ TEST(Place, Seed001GainsEigenvaluesAndP) {
 template <class S>
 class PlaceRandom : public ::testing::Test {};
 using PlaceAxes = ::testing::Types<Size<1>, Size<2>, Size<3>>;
-TYPED_TEST_SUITE(PlaceRandom, PlaceAxes);
+TYPED_TEST_SUITE(PlaceRandom, PlaceAxes, );  // trailing empty argument: clang -Wpedantic needs one for "..."
 
 TYPED_TEST(PlaceRandom, ClosedLoopHasTheRequestedEigenvalues) {
   constexpr int Axes = TypeParam::n;

@@ -24,8 +24,8 @@ using adcs::sim::SimError;
 struct DoubleIntegrator {
   static constexpr int kStateSize = 2;
   static constexpr int kInputSize = 1;
-  using State = adcs::Vec<2>;
-  using Input = adcs::Vec<1>;
+  using State = adcs::Vec<kStateSize>;
+  using Input = adcs::Vec<kInputSize>;
   void derivative(double /*t*/, const State& x, const Input& u, State& xdot) const noexcept {
     xdot << x(1), u(0);
   }
@@ -40,8 +40,8 @@ struct DoubleIntegrator {
 struct VanDerPol {
   static constexpr int kStateSize = 2;
   static constexpr int kInputSize = 1;
-  using State = adcs::Vec<2>;
-  using Input = adcs::Vec<1>;
+  using State = adcs::Vec<kStateSize>;
+  using Input = adcs::Vec<kInputSize>;
   double mu = 1.0;
   void derivative(double /*t*/, const State& x, const Input& u, State& xdot) const noexcept {
     xdot << x(1), mu * (1.0 - x(0) * x(0)) * x(1) - x(0) + u(0);
@@ -52,8 +52,8 @@ struct VanDerPol {
 struct NanAfterHalfSecond {
   static constexpr int kStateSize = 1;
   static constexpr int kInputSize = 1;
-  using State = adcs::Vec<1>;
-  using Input = adcs::Vec<1>;
+  using State = adcs::Vec<kStateSize>;
+  using Input = adcs::Vec<kInputSize>;
   void derivative(double t, const State& /*x*/, const Input& /*u*/, State& xdot) const noexcept {
     xdot(0) = t > 0.5 ? std::numeric_limits<double>::quiet_NaN() : 1.0;
   }

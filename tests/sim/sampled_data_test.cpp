@@ -17,8 +17,8 @@ using adcs::sim::SimError;
 struct FlippingIntegrator {
   static constexpr int kStateSize = 1;
   static constexpr int kInputSize = 1;
-  using State = adcs::Vec<1>;
-  using Input = adcs::Vec<1>;
+  using State = adcs::Vec<kStateSize>;
+  using Input = adcs::Vec<kInputSize>;
   int* normalize_calls = nullptr;
   void derivative(double /*t*/, const State& /*x*/, const Input& u, State& xdot) const noexcept {
     xdot = u;
