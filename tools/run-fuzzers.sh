@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The libFuzzer harnesses alone (tests/fuzz, clang++-14, ASan + UBSan), as a standalone build:
 # configures and builds tests/fuzz in BUILD_DIR and runs its ctest tests (label fuzz), each fuzzer
-# for a fixed number of inputs from its committed corpus, deterministically (-seed=1; the run
-# logic and the per-fuzzer defaults, 200000 inputs and 80000 for fuzz_seed004, live in
-# tests/fuzz/CMakeLists.txt and tests/fuzz/run_fuzzer.cmake). tools/run-tests.sh does not call
+# replaying its committed corpora and then trying a fixed number of new inputs, deterministically
+# (-seed=1; the run logic and the per-fuzzer defaults, 20000 new inputs and 8000 for
+# fuzz_seed004, live in tests/fuzz/CMakeLists.txt and tests/fuzz/run_fuzzer.cmake). Longer
+# campaigns that grow the committed corpus: tools/merge-fuzz-corpus.sh. tools/run-tests.sh does not call
 # this: the same tests run inside the ASan build of tools/run-sanitizers.sh (preset asan,
 # ADCS_FUZZ=ON). Fails (non-zero exit) on any crash, sanitizer report, leak, timeout or
 # FUZZ_CHECK; the input that did it is kept as BUILD_DIR/artifacts/<fuzzer>-crash-* (replay:
@@ -12,7 +13,8 @@
 #
 # Usage: tools/run-fuzzers.sh [BUILD_DIR] [RUNS]
 #   BUILD_DIR  default build-fuzz
-#   RUNS       inputs per fuzzer for all four (default: the per-fuzzer defaults above)
+#   RUNS       new inputs per fuzzer for all four, after the replay (default: the per-fuzzer
+#              defaults above)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-"$root/build-fuzz"}

@@ -1,30 +1,29 @@
 #!/usr/bin/env bash
-# The whole ctest suite under AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer
-# (clang++-14), plus the libFuzzer harnesses (ADCS_FUZZ=ON: ctest label fuzz, each for its fixed
-# number of inputs, tests/fuzz/CMakeLists.txt): every unit, property, scenario, no-allocation,
-# CLI and install-consumer test, with any sanitizer report fatal (halt_on_error,
-# -fno-sanitize-recover=undefined). Called by tools/run-tests.sh after the Release suite.
+# The flight and ground test groups under AddressSanitizer + LeakSanitizer +
+# UndefinedBehaviorSanitizer (clang++-14), plus the libFuzzer harnesses (ADCS_FUZZ=ON: ctest label
+# fuzz, tests/fuzz/CMakeLists.txt): every unit, property, harness, CLI, parameter, foundation- and
+# fault-scenario, no-allocation and install-consumer test, with any sanitizer report fatal
+# (halt_on_error, -fno-sanitize-recover=undefined). The papers' closed loops (adcs_claim_tests)
+# run in the Release tree only (preset asan: ADCS_TESTS_CLAIMS=OFF; docs/DECISIONS.md). Called by
+# tools/run-tests.sh after the Release suite.
 #   clang++-14, not g++: the same -O1 ASan+UBSan build of the Eigen-heavy tests compiles ~3-4x
 #        faster (measured per translation unit: g++ -O1 -g 138 s, clang++ -O1 -g 36 s), which is
 #        what lets the suite run in CI; it also puts a second compiler's warnings (-Werror) on
 #        every file.
-#   -O2: the closed-loop scenario tests run 10^5-10^6 controller steps each; at -O1 they were
-#        ~30x slower than the Release build.
+#   -O2: the scenario tests run 10^5 controller steps each; at -O1 they were ~30x slower than
+#        the Release build.
 #   UBSan: in full on the unit tests and the fuzzers (they reach every header); the ground code
 #        (src/ and the sim tests: the closed loops) leaves out the pointer checks (alignment,
 #        null, object-size, pointer-overflow, vptr, function; ADCS_GROUND_COMPILE_OPTIONS), which
-#        made its Eigen code ~9x slower than ASan alone (33 CPU-minutes for the sim suite, on a
-#        45-minute CI); the arithmetic checks (overflow, float-cast, shifts, division, bounds,
-#        bool/enum, return/unreachable) stay on everywhere.
+#        made its Eigen code ~9x slower than ASan alone; the arithmetic checks (overflow,
+#        float-cast, shifts, division, bounds, bool/enum, return/unreachable) stay on everywhere.
 #   -gline-tables-only (as CMAKE_CXX_FLAGS_DEBUG): file:line in every report without full
 #        debug info; Debug build type otherwise, so NDEBUG stays undefined and Eigen's own
 #        asserts (bounds, sizes) are armed too.
 #   Bench and the Cortex-M7 check are off: neither runs host code under test.
-# Nothing is excluded: the install consumer only installs headers and compiles a 14-line main
-# with the default flags, cli_contract runs the ASan-built adcs-sim on 2 s scenarios, and
-# plot_report is Python.
-# Usage: tools/run-sanitizers.sh [BUILD_DIR]   (default: build-asan). Prints the wall time of
-# each phase; exits non-zero on any build error, test failure or sanitizer report.
+# Usage: tools/run-sanitizers.sh [BUILD_DIR]   (default: build-asan). Prints the wall and CPU time
+# of each phase (tools/phases.sh); exits non-zero on any build error, test failure or sanitizer
+# report.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-"$root/build-asan"}
@@ -32,11 +31,10 @@ jobs=$(nproc 2>/dev/null || echo 2)
 # Flags live in CMakePresets.json (preset "asan").
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-t0=$(date +%s)
-cmake --preset asan -S "$root" -B "$build"
-t1=$(date +%s)
-cmake --build "$build" -j "$jobs"
-t2=$(date +%s)
-ctest --test-dir "$build" --output-on-failure -j "$jobs"
-t3=$(date +%s)
-echo "run-sanitizers: configure $((t1 - t0)) s, build $((t2 - t1)) s, ctest $((t3 - t2)) s, total $((t3 - t0)) s"
+standalone=${ADCS_PHASE_LOG:-yes}  # called by run-tests.sh: its table prints these phases too
+# shellcheck source=tools/phases.sh
+. "$root/tools/phases.sh"
+[ "$standalone" != yes ] || trap phase_table EXIT
+phase asan_configure cmake --preset asan -S "$root" -B "$build"
+phase asan_build cmake --build "$build" -j "$jobs"
+phase asan_ctest ctest --test-dir "$build" --output-on-failure -j "$jobs"

@@ -1,22 +1,49 @@
 #!/usr/bin/env bash
-# "Run the tests" (README command 2; .ci/run calls exactly this):
-#   1. install missing Debian packages;
-#   2. configure + build everything (Release, g++, warnings are errors) and run every ctest test
-#      (unit, property, scenario, CLI, install consumer, instruction counts, and the Cortex-M7
-#      header check and QEMU replays);
-#   3. the same suite again under ASan + UBSan (clang++-14, second build directory build-asan,
-#      tools/run-sanitizers.sh), with the libFuzzer harnesses run for their fixed number of
-#      inputs (ctest label fuzz, docs/FUZZING.md).
-# Usage: tools/run-tests.sh [BUILD_DIR]   (default: build; the sanitizer build is build-asan)
+# "Run the tests" (README command 2; .ci/run calls exactly this). About 30 minutes on 2 cores
+# from a fresh clone with the packages installed (the table at the end gives each phase).
+#   1. install missing Debian packages (tools/setup-deps.sh);
+#   2. Release tree (g++, -Werror), BUILD_DIR: the papers' closed loops and their claims
+#      (adcs_claim_tests), the Cortex-M7 checks (every public header, the instantiation units, the
+#      host/QEMU replays), the callgrind instruction counts, and adcs-sim / adcs-bench;
+#   3. ASan + UBSan tree (clang++-14, -Werror), build-asan (tools/run-sanitizers.sh): every unit,
+#      no-allocation, harness, CLI, parameter, foundation- and fault-scenario and install test,
+#      and the four libFuzzer harnesses replaying their committed corpora plus new inputs.
+# Each test is built in the one tree where it is needed (docs/DECISIONS.md, "Each test in one
+# tree"); no test runs in neither. Every phase prints its wall and CPU time, and a table of all
+# of them closes the run.
+#
+# Usage: tools/run-tests.sh [--quick] [BUILD_DIR]   (default build; the sanitizer tree is build-asan)
+#   --quick  the developers' inner loop: one clang++-14 tree without sanitizers (build-quick, or
+#            BUILD_DIR) with the unit, no-allocation, harness and paper-claim tests, and ctest on
+#            it; no Cortex-M7, no instruction counts, no ASan, no fuzzing. Not what CI runs.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=${1:-"$root/build"}
+quick=0
+if [ "${1:-}" = "--quick" ]; then quick=1; shift; fi
 jobs=$(nproc 2>/dev/null || echo 2)
+# shellcheck source=tools/phases.sh
+. "$root/tools/phases.sh"
+trap phase_table EXIT
 
-bash "$root/tools/setup-deps.sh"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build "$build" -j "$jobs"
-# The Cortex-M7 check is also a ctest test; building it here first keeps its output readable.
-cmake --build "$build" --target adcs_target_check -j "$jobs"
-ctest --test-dir "$build" --output-on-failure -j "$jobs"
+phase setup bash "$root/tools/setup-deps.sh"
+
+if [ "$quick" -eq 1 ]; then
+  build=${1:-"$root/build-quick"}
+  # clang compiles the Eigen-heavy tests ~3x faster than g++; -O2 with asserts armed (no NDEBUG).
+  phase configure cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
+    -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS_DEBUG=-O2 \
+    -DADCS_BUILD_BENCH=OFF -DADCS_TARGET_CHECK=OFF -DADCS_FUZZ=OFF
+  phase build cmake --build "$build" -j "$jobs"
+  phase ctest ctest --test-dir "$build" --output-on-failure -j "$jobs" -L 'unit|nomalloc|sim'
+  exit 0
+fi
+
+build=${1:-"$root/build"}
+phase configure cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=ON
+# The Cortex-M7 programs (ExternalProject, not in ALL) are built here with the rest rather than
+# inside ctest's target_compile_check, so the build phase shows their time and both cores share
+# them with the host objects.
+phase build cmake --build "$build" -j "$jobs" --target all adcs_target_check
+phase ctest ctest --test-dir "$build" --output-on-failure -j "$jobs"
 bash "$root/tools/run-sanitizers.sh" "$root/build-asan"

@@ -1,0 +1,19 @@
+// Step benchmarks of seed 002's Euler-angle tracking laws,
+// compiled once for adcs-bench (the benchmarks) and adcs-stepcount (the counted runs).
+#include "step_fixtures_seed002.hpp"
+#include "step_benchmark.hpp"
+
+namespace adcs::bench {
+ADCS_STEP_BENCHMARK(FlexiblePPC);  // seed 002 PPATC
+ADCS_STEP_BENCHMARK(AdaptiveTracking);  // seed 002 ATC baseline
+}  // namespace adcs::bench
+
+namespace adcs::bench {
+namespace {
+const StepEntry kSteps[] = {
+    ADCS_STEP_ENTRY(FlexiblePPC),
+    ADCS_STEP_ENTRY(AdaptiveTracking),
+};
+}  // namespace
+StepTable seed002_steps() noexcept { return {kSteps, static_cast<int>(sizeof(kSteps) / sizeof(kSteps[0]))}; }
+}  // namespace adcs::bench

@@ -1,0 +1,21 @@
+// Step benchmarks of seed 003's SE(3) laws and quantizer,
+// compiled once for adcs-bench (the benchmarks) and adcs-stepcount (the counted runs).
+#include "step_fixtures_seed003.hpp"
+#include "step_benchmark.hpp"
+
+namespace adcs::bench {
+ADCS_STEP_BENCHMARK(SE3PrescribedTime);  // seed 003 BsPdTC
+ADCS_STEP_BENCHMARK(SE3Ftsmc);  // seed 003 FTSMC baseline
+ADCS_STEP_BENCHMARK(CompositeQuantizer);  // seed 003 sat + quantizer, 6 channels
+}  // namespace adcs::bench
+
+namespace adcs::bench {
+namespace {
+const StepEntry kSteps[] = {
+    ADCS_STEP_ENTRY(SE3PrescribedTime),
+    ADCS_STEP_ENTRY(SE3Ftsmc),
+    ADCS_STEP_ENTRY(CompositeQuantizer),
+};
+}  // namespace
+StepTable seed003_steps() noexcept { return {kSteps, static_cast<int>(sizeof(kSteps) / sizeof(kSteps[0]))}; }
+}  // namespace adcs::bench

@@ -1,0 +1,27 @@
+// Step benchmarks of seed 004's filters and laws (one 0.1 s sample),
+// compiled once for adcs-bench (the benchmarks) and adcs-stepcount (the counted runs).
+#include "step_fixtures_seed004.hpp"
+#include "step_benchmark.hpp"
+
+namespace adcs::bench {
+ADCS_STEP_BENCHMARK(DragFreeEskf);  // seed 004 Algorithm 1
+ADCS_STEP_BENCHMARK(SaturatedEsf);  // seed 004 Algorithm 2, one axis
+ADCS_STEP_BENCHMARK(Fusion);  // seed 004 Algorithm 3, one axis
+ADCS_STEP_BENCHMARK(Adrc);  // seed 004 ADRC law alone
+ADCS_STEP_BENCHMARK(Pid);  // seed 004 PID baseline
+ADCS_STEP_BENCHMARK(DragFreeAdrc);  // seed 004 whole sample: Algorithms 1-3 + ADRC
+}  // namespace adcs::bench
+
+namespace adcs::bench {
+namespace {
+const StepEntry kSteps[] = {
+    ADCS_STEP_ENTRY(DragFreeEskf),
+    ADCS_STEP_ENTRY(SaturatedEsf),
+    ADCS_STEP_ENTRY(Fusion),
+    ADCS_STEP_ENTRY(Adrc),
+    ADCS_STEP_ENTRY(Pid),
+    ADCS_STEP_ENTRY(DragFreeAdrc),
+};
+}  // namespace
+StepTable seed004_steps() noexcept { return {kSteps, static_cast<int>(sizeof(kSteps) / sizeof(kSteps[0]))}; }
+}  // namespace adcs::bench

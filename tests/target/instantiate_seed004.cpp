@@ -1,0 +1,35 @@
+// Cortex-M7 instantiation unit 4 of 5 (see instantiate_attitude.cpp): seed 004's flight filters
+// and laws as the drag-free sample runs them: Algorithm 1 as two blocks, Algorithm 2, fusion,
+// ADRC, the PID baseline.
+#include "adcs/control/adrc.hpp"
+#include "adcs/control/pid.hpp"
+#include "adcs/estimate/drag_free_eskf.hpp"
+#include "adcs/estimate/fusion.hpp"
+#include "adcs/estimate/partitioned_eskf.hpp"
+#include "adcs/estimate/saturated_esf.hpp"
+#include "adcs/math/truncated_normal.hpp"
+#include "adcs/plant/drag_free.hpp"
+
+namespace adcs {
+template class Pid<1>;
+template class PartitionedEskf<18, 9, 9, 9, 6, 3>;
+}  // namespace adcs
+
+extern "C" int adcs_target_smoke_seed004(const double* in, double* out) {
+  adcs::DragFreeDiscrete dfd;
+  const adcs::Status s5 = adcs::drag_free_discretize(adcs::DragFreeParams{}, dfd);
+  adcs::DragFreeEskf::Params ep;
+  ep.A_d = dfd.A_d;
+  ep.B_d = dfd.B_d;
+  ep.B_e = dfd.B_e;
+  ep.C_d = dfd.C_d;
+  adcs::DragFreeEskf alg1(ep);
+  adcs::SaturatedEsf alg2(adcs::SaturatedEsfParams{});
+  adcs::DragFreeAdrc adrc(adcs::DragFreeAdrcParams{});
+  adcs::Vec<9> u9 = adcs::Vec<9>::Zero();
+  const adcs::Status s6 = adcs::worst(alg1.predict(u9), alg1.update(adcs::Vec<9>::Constant(in[5])));
+  const adcs::Status s7 = adcs::worst(alg2.update(in[6], 0.0), adcs::fuse_axis(alg1, alg2, 0));
+  const adcs::Status s8 = adrc.step(alg1.state(), adcs::Vec3::Zero(), adcs::Vec3::Zero(), u9);
+  out[2] = u9.sum() + adcs::upper_truncated_std_normal(in[7]).mean + adcs::fal(in[8], 0.5, 0.01);
+  return static_cast<int>(s5) + static_cast<int>(s6) + static_cast<int>(s7) + static_cast<int>(s8);
+}
