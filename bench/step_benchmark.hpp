@@ -98,6 +98,11 @@ struct StepTable {
   const StepEntry* entries;
   int size;
 };
+//! A unit's table from its array of entries.
+template <int N>
+constexpr StepTable step_table(const StepEntry (&entries)[N]) noexcept {
+  return {entries, N};
+}
 StepTable attitude_steps() noexcept;  // bench/steps_attitude.cpp
 StepTable seed002_steps() noexcept;   // bench/steps_seed002.cpp
 StepTable seed003_steps() noexcept;   // bench/steps_seed003.cpp

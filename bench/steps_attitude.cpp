@@ -60,5 +60,5 @@ const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(HybridAdaptiveNormalized),
 };
 }  // namespace
-StepTable attitude_steps() noexcept { return {kSteps, static_cast<int>(sizeof(kSteps) / sizeof(kSteps[0]))}; }
+StepTable attitude_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

@@ -6,14 +6,12 @@
 namespace adcs::bench {
 ADCS_STEP_BENCHMARK(FlexiblePPC);  // seed 002 PPATC
 ADCS_STEP_BENCHMARK(AdaptiveTracking);  // seed 002 ATC baseline
-}  // namespace adcs::bench
 
-namespace adcs::bench {
 namespace {
 const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(FlexiblePPC),
     ADCS_STEP_ENTRY(AdaptiveTracking),
 };
 }  // namespace
-StepTable seed002_steps() noexcept { return {kSteps, static_cast<int>(sizeof(kSteps) / sizeof(kSteps[0]))}; }
+StepTable seed002_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

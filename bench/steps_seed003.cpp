@@ -7,9 +7,7 @@ namespace adcs::bench {
 ADCS_STEP_BENCHMARK(SE3PrescribedTime);  // seed 003 BsPdTC
 ADCS_STEP_BENCHMARK(SE3Ftsmc);  // seed 003 FTSMC baseline
 ADCS_STEP_BENCHMARK(CompositeQuantizer);  // seed 003 sat + quantizer, 6 channels
-}  // namespace adcs::bench
 
-namespace adcs::bench {
 namespace {
 const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(SE3PrescribedTime),
@@ -17,5 +15,5 @@ const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(CompositeQuantizer),
 };
 }  // namespace
-StepTable seed003_steps() noexcept { return {kSteps, static_cast<int>(sizeof(kSteps) / sizeof(kSteps[0]))}; }
+StepTable seed003_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

@@ -10,9 +10,7 @@ ADCS_STEP_BENCHMARK(Fusion);  // seed 004 Algorithm 3, one axis
 ADCS_STEP_BENCHMARK(Adrc);  // seed 004 ADRC law alone
 ADCS_STEP_BENCHMARK(Pid);  // seed 004 PID baseline
 ADCS_STEP_BENCHMARK(DragFreeAdrc);  // seed 004 whole sample: Algorithms 1-3 + ADRC
-}  // namespace adcs::bench
 
-namespace adcs::bench {
 namespace {
 const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(DragFreeEskf),
@@ -23,5 +21,5 @@ const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(DragFreeAdrc),
 };
 }  // namespace
-StepTable seed004_steps() noexcept { return {kSteps, static_cast<int>(sizeof(kSteps) / sizeof(kSteps[0]))}; }
+StepTable seed004_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

@@ -6,6 +6,11 @@
 #include "adcs/plant/drag_free.hpp"
 
 namespace adcs::test::drag_free {
+// The names every drag-free test uses, brought in by its `using namespace adcs::test::drag_free`.
+using adcs::Mat3;
+using adcs::Status;
+using adcs::Vec3;
+using Ix = adcs::DragFreeIndex;
 
 inline adcs::DragFreeDiscrete discrete(const adcs::DragFreeParams& p = {}) {
   adcs::DragFreeDiscrete d;

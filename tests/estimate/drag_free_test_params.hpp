@@ -12,8 +12,6 @@
 #include "drag_free_test_model.hpp"
 
 namespace adcs::test::drag_free {
-using adcs::Status;
-using adcs::Vec3;
 
 inline adcs::DragFreeEskf::Params eskf_params(const adcs::DragFreeDiscrete& d) {
   const adcs::DragFreeParams p;

@@ -15,11 +15,7 @@
 #include "drag_free_test_params.hpp"
 
 namespace {
-using adcs::Mat3;
-using adcs::Status;
-using adcs::Vec3;
-using Ix = adcs::DragFreeIndex;
-using namespace adcs::test::drag_free;  // discrete(), eskf_params(), esf_params()
+using namespace adcs::test::drag_free;  // discrete(), eskf_params(), esf_params(), Status, Vec3, Mat3, Ix
 
 TEST(DragFreeEskf, CovarianceStaysSymmetricPsdThroughFusionB11_4AndFusionB11_7) {
   const adcs::DragFreeParams p;

@@ -11,11 +11,7 @@
 #include "drag_free_test_model.hpp"
 
 namespace {
-using adcs::Mat3;
-using adcs::Status;
-using adcs::Vec3;
-using Ix = adcs::DragFreeIndex;
-using namespace adcs::test::drag_free;  // discrete()
+using namespace adcs::test::drag_free;  // discrete(), Status, Vec3, Mat3, Ix
 
 TEST(DragFreeModel, PerAxisModelIsThe27StateModelRestrictedB11_2) {
   adcs::DragFreeParams p;
