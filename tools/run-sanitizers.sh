@@ -12,10 +12,13 @@
 #        every file.
 #   -O2: the scenario tests run 10^5 controller steps each; at -O1 they were ~30x slower than
 #        the Release build.
-#   UBSan: in full on the unit tests and the fuzzers (they reach every header); the ground code
-#        (src/ and the sim tests: the closed loops) leaves out the pointer checks (alignment,
-#        null, object-size, pointer-overflow, vptr, function; ADCS_GROUND_COMPILE_OPTIONS), which
-#        made its Eigen code ~9x slower than ASan alone; the arithmetic checks (overflow,
+#   UBSan: in full on the four fuzzers, which drive every controller/estimator step() of
+#        include/adcs with arbitrary inputs; the tests (unit, no-allocation, sim, and src/ that they
+#        link) leave out the pointer checks (alignment, null, object-size, pointer-overflow, vptr,
+#        function; ADCS_TEST_COMPILE_OPTIONS), which made the closed loops' Eigen code ~9x slower
+#        than ASan alone and cost ~40 % of the unit tests' compile time. What they would catch there
+#        is still caught: out-of-bounds and object-size by ASan, Eigen's unaligned-array and index
+#        asserts (armed: no NDEBUG), null by the segfault. The arithmetic checks (overflow,
 #        float-cast, shifts, division, bounds, bool/enum, return/unreachable) stay on everywhere.
 #   -gline-tables-only (as CMAKE_CXX_FLAGS_DEBUG): file:line in every report without full
 #        debug info; Debug build type otherwise, so NDEBUG stays undefined and Eigen's own
