@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# "Run the tests" (README command 2; .ci/run calls exactly this). About 30 minutes on 2 cores
+# "Run the tests" (README command 2; .ci/run calls exactly this). About 15 minutes on 2 cores
 # from a fresh clone with the packages installed (the table at the end gives each phase).
 #   1. install missing Debian packages (tools/setup-deps.sh);
 #   2. Release tree (g++, -Werror), BUILD_DIR: the papers' closed loops and their claims
