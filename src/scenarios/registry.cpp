@@ -27,6 +27,7 @@ std::unique_ptr<Scenario> make_dragfree_pid();
 std::unique_ptr<Scenario> make_se3_ptc();
 std::unique_ptr<Scenario> make_se3_ftsmc();
 std::unique_ptr<Scenario> make_se3_campaign();
+std::unique_ptr<Scenario> make_cmg_singularity_escape();
 
 namespace {
 
@@ -52,6 +53,7 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_se3_ptc());
   v.push_back(make_se3_ftsmc());
   v.push_back(make_se3_campaign());
+  v.push_back(make_cmg_singularity_escape());
   return v;
 }
 

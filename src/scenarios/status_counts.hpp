@@ -29,7 +29,8 @@ class StatusCounts {
  private:
   static constexpr Status kAll[] = {Status::ok,          Status::non_finite_input, Status::out_of_range,
                                     Status::singular,    Status::ill_conditioned,  Status::constraint_violated,
-                                    Status::saturated,   Status::not_converged,    Status::invalid_parameter};
+                                    Status::saturated,   Status::not_converged,    Status::invalid_parameter,
+                                    Status::request_not_met};
   long n_[sizeof(kAll) / sizeof(kAll[0])] = {};
 };
 

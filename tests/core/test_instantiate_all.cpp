@@ -44,6 +44,11 @@ template int saturate_each<9>(Vec<9>&, const Vec<9>&) noexcept;
 template Status steer<7>(const Mat<3, 7>&, const Vec3&, const SteeringParams&, Vec<7>&, SteeringInfo*) noexcept;
 template Status steer_available<7>(const Mat<3, 7>&, const Vec3&, const SteeringParams&, ActuatorMask, Vec<7>&,
                                    SteeringInfo*) noexcept;
+template Status steer_escape<4>(const Mat<3, 4>&, const Vec3&, const EscapeSteeringParams&, double, Vec<4>&,
+                                SteeringInfo*) noexcept;
+template struct VscmgGeometry<4, 0>;
+template Status set_cmg_pyramid<4, 0>(double, double, VscmgGeometry<4, 0>&) noexcept;
+template Status wheel_pyramid_axes<4>(double, Mat<3, 4>&) noexcept;
 // adapt/
 template struct PpcParams<3>;
 template struct PpcSample<3>;

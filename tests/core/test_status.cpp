@@ -16,10 +16,11 @@ namespace {
 
 using adcs::Status;
 
-constexpr std::array<Status, 9> kAllStatuses = {
+constexpr std::array<Status, 10> kAllStatuses = {
     Status::ok,           Status::non_finite_input,    Status::out_of_range,
     Status::singular,     Status::ill_conditioned,     Status::constraint_violated,
     Status::saturated,    Status::not_converged,       Status::invalid_parameter,
+    Status::request_not_met,
 };
 
 // The helpers are constexpr: usable in compile-time tables.
@@ -48,6 +49,7 @@ TEST(Status, ToStringIsDistinctNonEmptyAndStable) {
   EXPECT_STREQ(adcs::to_string(Status::saturated), "saturated");
   EXPECT_STREQ(adcs::to_string(Status::not_converged), "not_converged");
   EXPECT_STREQ(adcs::to_string(Status::invalid_parameter), "invalid_parameter");
+  EXPECT_STREQ(adcs::to_string(Status::request_not_met), "request_not_met");
   // A corrupted value (e.g. from telemetry) still maps to a string.
   EXPECT_STREQ(adcs::to_string(static_cast<Status>(200)), "unknown");
 }
@@ -62,6 +64,20 @@ TEST(Status, UsableSplitsDegradedFromHardFailures) {
   EXPECT_FALSE(adcs::usable(Status::singular));
   EXPECT_FALSE(adcs::usable(Status::not_converged));
   EXPECT_FALSE(adcs::usable(Status::invalid_parameter));
+  EXPECT_FALSE(adcs::usable(Status::request_not_met));
+}
+
+TEST(Status, WrittenIsUsableOrRequestNotMet) {
+  for (Status s : kAllStatuses) {
+    SCOPED_TRACE(adcs::to_string(s));
+    EXPECT_EQ(adcs::written(s), adcs::usable(s) || s == Status::request_not_met);
+  }
+}
+
+TEST(Status, NumericValuesAreStable) {
+  // Logged and sent to the ground as numbers: a new status goes at the end.
+  EXPECT_EQ(static_cast<int>(Status::invalid_parameter), 8);
+  EXPECT_EQ(static_cast<int>(Status::request_not_met), 9);
 }
 
 TEST(Status, WorstKeepsTheHardFailure) {

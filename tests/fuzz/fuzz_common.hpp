@@ -126,7 +126,7 @@ class Reader {
 //! a corpus reaches applied steps as well as each rejection, docs/FUZZING.md).
 class Stats {
  public:
-  static constexpr int kTargets = 8, kStatuses = 9;
+  static constexpr int kTargets = 8, kStatuses = 10;
   static Stats& instance() noexcept {
     static Stats s;
     return s;

@@ -8,6 +8,7 @@
 //    and every estimate / counter bitwise unchanged;
 //  - an applied step keeps the estimates finite and each Θ̂_G block inside its invariant ball
 //    ‖Θ̂_Gk‖² ≤ β + δ, and counts a safeguard event exactly when it returns constraint_violated.
+#include <cmath>
 #include <cstdint>
 
 #include "adcs/actuator/rw_allocation.hpp"
@@ -137,8 +138,48 @@ void fuzz_hybrid(fuzz::Reader& r) {
   }
 }
 
-// steer<7> / steer_available<7> on fuzzed X, v, mask: usable statuses give a finite u (exact
-// zeros for unavailable actuators); the others leave u untouched.
+// The graded statuses of a written steering command agree with the torque error it reports.
+void check_torque_error(const adcs::Mat<3, 7>& X, const Vec3& v, const adcs::Vec<7>& u, const adcs::SteeringInfo& info,
+                        double bound, Status s, const char* who) {
+  (void)X, (void)v, (void)u, (void)who;
+  if (s == Status::request_not_met) {
+    FUZZ_CHECK(!(info.torque_error <= bound), "steering: request_not_met with the torque error within its bound");
+  } else {
+    FUZZ_CHECK(info.torque_error <= bound, "steering: usable status with the torque error beyond its bound");
+  }
+}
+
+// steer_escape<7> on the same X and v, at the sample time k * 0.1 s (no extra input bytes, so
+// the committed corpus keeps its meaning): a written command is finite and within the bound
+// ‖u‖ ≤ ‖v‖ / (2 s √(λ (1 − 2ε0))); request_not_met only beyond max_torque_error; anything else
+// leaves u untouched.
+void fuzz_escape_steering(const adcs::Mat<3, 7>& X, const Vec3& v, int config, int k) {
+  static const adcs::EscapeSteeringParams kEscape[4] = {
+      {}, {1.0, 0.0, 0.0}, {1e-6, 100.0, 0.49}, {0.01, 10.0, 0.01, 1e3}};
+  const adcs::EscapeSteeringParams& p = kEscape[(config >> 3) & 3];
+  adcs::Vec<7> u = adcs::Vec<7>::Constant(-7.0);
+  const adcs::Vec<7> u0 = u;
+  adcs::SteeringInfo info;
+  const Status s = adcs::steer_escape<7>(X, v, p, 0.1 * k, u, &info);
+  fuzz::stat(5, "steer_escape<7>", s);
+  fuzz::check_status_vs_input(s, fuzz::finite(X) && fuzz::finite(v), "steer_escape: non-finite input not rejected");
+  if (adcs::written(s)) {
+    FUZZ_CHECK(fuzz::finite(u), "steer_escape: written command not finite");
+    FUZZ_CHECK(info.mode == adcs::SteeringMode::singularity_escape, "steer_escape: wrong mode");
+    if (s != Status::ok) check_torque_error(X, v, u, info, p.max_torque_error, s, "steer_escape");
+    const double scale = X.colwise().norm().maxCoeff();
+    if (scale > 0.0 && info.regularization > 0.0) {
+      const double bound = v.norm() / (2.0 * scale * std::sqrt(info.regularization * (1.0 - 2.0 * p.epsilon0)));
+      FUZZ_CHECK(u.norm() <= bound * (1.0 + 1e-6) + 1e-300 || !std::isfinite(bound), "steer_escape: |u| beyond its bound");
+    }
+  } else {
+    FUZZ_CHECK(fuzz::same_bits_mat(u, u0), "steer_escape: rejected but wrote u");
+  }
+}
+
+// steer<7> / steer_available<7> on fuzzed X, v, mask: usable statuses and request_not_met give a
+// finite u (exact zeros for unavailable actuators) whose torque error matches the status; the
+// others leave u untouched.
 void fuzz_steering(fuzz::Reader& r) {
   static const adcs::SteeringParams kParams[4] = {{1e-3, 1e-2}, {1e-3, 0.0}, {0.0, 1e-2}, {1.0, 1.0}};
   const int config = r.u8();
@@ -166,7 +207,7 @@ void fuzz_steering(fuzz::Reader& r) {
     for (int i = 0; i < 7; ++i)
       if ((mask >> i) & 1u) finite_in = finite_in && fuzz::finite(adcs::Vec3(X.col(i)));
     fuzz::check_status_vs_input(s, finite_in, "steer: non-finite input not rejected");
-    if (fuzz::applied(s)) {
+    if (adcs::written(s)) {  // usable, or request_not_met: written, finite, bounded
       FUZZ_CHECK(fuzz::finite(u), "steer: usable status with a non-finite u");
       for (int i = 0; i < 7; ++i)
         if (!((mask >> i) & 1u)) FUZZ_CHECK(u(i) == 0.0, "steer_available: unavailable actuator commanded");
@@ -176,6 +217,8 @@ void fuzz_steering(fuzz::Reader& r) {
     FUZZ_CHECK((s == Status::ill_conditioned) == (info.mode == adcs::SteeringMode::singularity_robust) ||
                    !fuzz::applied(s),
                "steer: status and mode disagree");
+    if (adcs::written(s) && s != Status::ok) check_torque_error(X, v, u, info, p.max_torque_error, s, "steer");
+    if (!masked) fuzz_escape_steering(X, v, config, k);
   }
 }
 

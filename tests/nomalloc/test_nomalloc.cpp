@@ -298,7 +298,10 @@ TEST(NoMalloc, PlantDerivativeAndMathKernels) {
                                   {{{-0.3, 0.3}, {-0.3, -0.3}}},
                                   {{{-0.2 * std::sqrt(2.0), 0}, {-0.3 * std::sqrt(2.0), 0}}}}};
   long allocs = 0;
-  adcs::Status s[7];
+  adcs::Status s[8];
+  adcs::VscmgGeometry<4, 0> cmgs;
+  ASSERT_EQ(adcs::set_cmg_pyramid(1.0, 0.03, cmgs), adcs::Status::ok);
+  adcs::Vec<4> u4;
   {
     NoAllocScope scope;
     plant.derivative(0.0, x, u, xdot);
@@ -318,6 +321,9 @@ TEST(NoMalloc, PlantDerivativeAndMathKernels) {
     const adcs::SinusoidalRateReference ref;
     const adcs::MrpReferenceSample rs = ref.sample(12.0, v * 0.1);
     s[6] = adcs::all_finite(rs.sigma_ddot) ? adcs::Status::ok : adcs::Status::non_finite_input;
+    // The singularity-escape steering of a pure CMG cluster (issue 15).
+    s[7] = adcs::steer_escape<4>(cmgs.A_ct(adcs::Vec<4>::Constant(0.1)) * cmgs.h_cw.asDiagonal(),
+                                 adcs::Vec3(1e-3, 0.0, 0.0), adcs::EscapeSteeringParams{}, 0.3, u4);
     // The seed 001 truth plant's right-hand side (run inside CVODE's callback).
     static const adcs::VscmgFullPlant<4, 3> vscmg(adcs::vscmg_params_A_REF());
     adcs::VscmgFullPlant<4, 3>::State xv = adcs::VscmgFullPlant<4, 3>::State::Constant(0.05), xvd;

@@ -49,6 +49,11 @@ template VscmgDeviation<4, 3> rigid_mounting_deviation<4, 3>(const VscmgGeometry
                                                             const Mat<3, 4>&, const Mat<3, 3>&) noexcept;
 template Status steer<7>(const Mat<3, 7>&, const Vec3&, const SteeringParams&, Vec<7>&,
                          SteeringInfo*) noexcept;
+template Status steer_escape<4>(const Mat<3, 4>&, const Vec3&, const EscapeSteeringParams&, double, Vec<4>&,
+                                SteeringInfo*) noexcept;
+template struct VscmgGeometry<4, 0>;
+template Status set_cmg_pyramid<4, 0>(double, double, VscmgGeometry<4, 0>&) noexcept;
+template Status wheel_pyramid_axes<4>(double, Mat<3, 4>&) noexcept;
 }  // namespace adcs
 
 // A flight-style entry point that exercises the non-template attitude functions.

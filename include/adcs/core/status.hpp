@@ -2,7 +2,8 @@
 // Status codes returned by every fallible flight-code call (controllers' step(), inversions,
 // solvers). A non-ok status never comes with a non-finite output: the callee either produced a
 // usable (possibly degraded) result, or left its outputs and internal state untouched, as each
-// function documents.
+// function documents. The one exception is request_not_met: the output is written, finite and
+// bounded, but it does not do what was asked (see written()).
 #include <cstdint>
 
 namespace adcs {
@@ -19,6 +20,11 @@ enum class [[nodiscard]] Status : std::uint8_t {
   saturated,             //!< A command exceeded an actuator limit and was clipped/scaled.
   not_converged,         //!< A bounded iteration hit its limit without converging.
   invalid_parameter,     //!< A parameter struct failed validation (construction / reset()).
+  request_not_met,       //!< A finite, bounded output was written, but it misses the request by
+                         //!< more than its documented bound (CMG steering at a singularity or at
+                         //!< the momentum envelope: torque error above the bound). Not usable()
+                         //!< as the requested result; each function says whether the output may
+                         //!< still be applied (a singularity-escape command is meant to be).
 };
 
 //! Short, stable, human-readable name of a status (for logs and ground tools).
@@ -33,6 +39,7 @@ constexpr const char* to_string(Status s) noexcept {
     case Status::saturated: return "saturated";
     case Status::not_converged: return "not_converged";
     case Status::invalid_parameter: return "invalid_parameter";
+    case Status::request_not_met: return "request_not_met";
   }
   return "unknown";
 }
@@ -42,6 +49,10 @@ constexpr bool usable(Status s) noexcept {
   return s == Status::ok || s == Status::ill_conditioned || s == Status::constraint_violated ||
          s == Status::saturated;
 }
+
+//! True when the outputs were written: the usable statuses and request_not_met (whose output is
+//! finite and bounded but misses its request). Every other status leaves the outputs untouched.
+constexpr bool written(Status s) noexcept { return usable(s) || s == Status::request_not_met; }
 
 //! Keeps the most severe of two statuses (the first non-ok wins; a hard failure beats a
 //! degraded result). Lets a step() accumulate the statuses of its sub-steps.

@@ -9,6 +9,9 @@
 namespace adcs {
 
 using Scalar = double;
+
+//! π [rad], for angle conversions and geometry builders (M_PI is not standard C++).
+inline constexpr double kPiRad = 3.14159265358979323846;
 template <int Rows, int Cols>
 using Mat = Eigen::Matrix<double, Rows, Cols, (Cols == 1 && Rows != 1) ? Eigen::ColMajor
                                               : (Rows == 1 && Cols != 1) ? Eigen::RowMajor

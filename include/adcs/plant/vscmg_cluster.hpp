@@ -31,7 +31,7 @@ namespace adcs {
 //! Geometry and inertias of a cluster of M CMGs and N reaction wheels.
 template <int M, int N>
 struct VscmgGeometry {
-  static_assert(M >= 1 && N >= 1, "VscmgGeometry: need M >= 1 CMGs and N >= 1 wheels");
+  static_assert(M >= 1 && N >= 0, "VscmgGeometry: need M >= 1 CMGs and N >= 0 wheels (N = 0: a pure CMG cluster)");
   Mat<3, M> A_cg = Mat<3, M>::Zero();   //!< [-] gimbal axes g_i (columns), constant
   Mat<3, M> A_cs0 = Mat<3, M>::Zero();  //!< [-] rotor spin axes s_i0 at gamma_i = 0
   Mat<3, M> A_ct0 = Mat<3, M>::Zero();  //!< [-] transverse axes t_i0 at gamma_i = 0
@@ -68,7 +68,8 @@ struct VscmgGeometry {
       J += I_ct(i) * T.col(i) * T.col(i).transpose();
       J += I_cg(i) * A_cg.col(i) * A_cg.col(i).transpose();
     }
-    for (int j = 0; j < N; ++j) J += I_wws(j) * A_ws.col(j) * A_ws.col(j).transpose();
+    if constexpr (N > 0)  // a pure CMG cluster has no wheel columns to take
+      for (int j = 0; j < N; ++j) J += I_wws(j) * A_ws.col(j) * A_ws.col(j).transpose();
     return J;
   }
   //! Q_act(gamma) = [A_ct(gamma) H_cw, A_ws I_wws] [N m s | kg m^2]: torque per unit input
@@ -77,7 +78,8 @@ struct VscmgGeometry {
     Mat<3, M + N> Q;
     const Mat<3, M> T = A_ct(gamma);
     for (int i = 0; i < M; ++i) Q.col(i) = h_cw(i) * T.col(i);
-    for (int j = 0; j < N; ++j) Q.col(M + j) = I_wws(j) * A_ws.col(j);
+    if constexpr (N > 0)
+      for (int j = 0; j < N; ++j) Q.col(M + j) = I_wws(j) * A_ws.col(j);
     return Q;
   }
   //! Internal (actuator) momentum A_cs h_cw + A_cg I_cg gamma_dot + A_ws I_wws Omega_w [N m s].
