@@ -12,8 +12,12 @@
 #include <ostream>
 #include <set>
 
+#include <unistd.h>
+
 #include "cli/atomic_file.hpp"
 #include "cli/json.hpp"
+#include "cli/progress.hpp"
+#include "sim/sampled_data.hpp"
 #include "sim/recorder.hpp"
 #include "scenarios/registry.hpp"
 
@@ -42,13 +46,28 @@ ParamSet declared_params(const Scenario& s,
                        "')");
     }
   }
-  // Checks every scenario shares (they are declared as numbers by contract).
-  for (const char* key : {"duration_s", "control_period_s"}) {
-    if (ps.has(key) && ps.at(key).kind == ParamKind::number && !(ps.get_number(key) > 0.0))
-      throw ParamError(std::string("parameter '") + key + "' must be > 0, got " +
-                       format_value(ps.at(key)));
-  }
+  check_run_parameters(ps);
   return ps;
+}
+
+bool has_number(const ParamSet& ps, const char* key) {
+  return ps.has(key) && ps.at(key).kind == ParamKind::number;
+}
+
+//! Refuses duration_s / step_key above kMaxSteps (or not finite).
+void check_steps(const ParamSet& ps, const char* step_key, const char* what) {
+  if (!has_number(ps, "duration_s") || !has_number(ps, step_key)) return;
+  const double n = ps.get_number("duration_s") / ps.get_number(step_key);
+  if (!(n <= kMaxSteps))
+    throw ParamError(std::string("duration_s / ") + step_key + " = " +
+                     format_value(ps.at("duration_s")) + " / " + format_value(ps.at(step_key)) +
+                     " = " + format_number(n) + " " + what + ", more than the maximum " +
+                     format_number(kMaxSteps) + " (lower duration_s or raise " + step_key + ")");
+}
+
+[[noreturn]] void refuse(const ParamSet& ps, const char* key, const std::string& rule) {
+  throw ParamError(std::string("parameter '") + key + "' must be " + rule + ", got " +
+                   format_value(ps.at(key)));
 }
 
 void write_param_value(JsonWriter& w, ParamKind kind, const ParamValue& v) {
@@ -60,21 +79,48 @@ void write_param_value(JsonWriter& w, ParamKind kind, const ParamValue& v) {
   }
 }
 
-void write_parameters(JsonWriter& w, const ParamSet& ps) {
+const UsedValue* find_used(const std::vector<UsedValue>& used, const std::string& key) {
+  for (const UsedValue& u : used)
+    if (u.key == key) return &u;
+  return nullptr;
+}
+
+//! The declared parameters; a value the run reports in `used` replaces the declared "value"
+//! (its "source" says how it was obtained; the declared value moves to "declared" /
+//! "declared_source"); used values of undeclared keys follow the declared ones.
+void write_parameters(JsonWriter& w, const ParamSet& ps, const std::vector<UsedValue>& used = {}) {
   w.key("parameters").begin_object();
   for (const Param& p : ps) {
+    const std::string declared_source = p.overridden ? "command line (--set)" : p.source;
     w.key(p.key).begin_object();
     w.key("value");
-    write_param_value(w, p.kind, p.value);
-    w.key("unit").value(p.unit);
+    if (const UsedValue* u = find_used(used, p.key)) {
+      write_param_value(w, u->kind, u->value);
+      w.key("unit").value(u->unit.empty() ? p.unit : u->unit);
+      w.key("source").value(u->source);
+      w.key("declared");
+      write_param_value(w, p.kind, p.value);
+      w.key("declared_source").value(declared_source);
+    } else {
+      write_param_value(w, p.kind, p.value);
+      w.key("unit").value(p.unit);
+      w.key("source").value(declared_source);
+    }
     if (p.overridden) {
-      w.key("source").value("command line (--set)");
       w.key("default");
       write_param_value(w, p.kind, p.default_value);
       w.key("default_source").value(p.source);
-    } else {
-      w.key("source").value(p.source);
     }
+    w.end_object();
+  }
+  std::set<std::string> written;
+  for (const UsedValue& u : used) {
+    if (ps.has(u.key) || !written.insert(u.key).second) continue;
+    w.key(u.key).begin_object();
+    w.key("value");
+    write_param_value(w, u.kind, u.value);
+    w.key("unit").value(u.unit);
+    w.key("source").value(u.source);
     w.end_object();
   }
   w.end_object();
@@ -100,6 +146,7 @@ void check_metrics(const Scenario& s, const RunResult& r) {
 RunResult run_scenario(const Scenario& s, const ParamSet& ps, const RunContext& ctx) {
   RunResult r;
   try {
+    const ProgressScope progress(ctx.progress);
     r = s.run(ps, ctx);
   } catch (const ParamError&) {
     throw;  // an invalid value the scenario detected: exit 2
@@ -196,7 +243,8 @@ int cmd_describe(const Options& o, const Catalog& catalog, std::ostream& out) {
   return kExitOk;
 }
 
-int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
+int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out, std::ostream& err,
+            bool err_is_terminal) {
   const Scenario& s = lookup(catalog, o.scenario);
   const ParamSet ps = declared_params(s, o.sets);
   const std::uint64_t seed = o.seed.value_or(0);
@@ -205,11 +253,17 @@ int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
   TempFile csv(dir.path(), s.name() + ".csv");
   TempFile json(dir.path(), s.name() + ".json");
 
+  ProgressReporter progress(err, s.name(), o.progress, err_is_terminal);
   RunContext ctx;
   ctx.csv_path = csv.temp_path();
   ctx.seed = seed;
   ctx.quiet = false;
+  if (progress.enabled())
+    ctx.progress = [&progress](double t0, double t, double t_end) {
+      progress.update(t0, t, t_end);
+    };
   const RunResult r = run_scenario(s, ps, ctx);
+  progress.finish();
   if (!csv.temp_exists())
     throw RunFailure("scenario '" + s.name() + "' did not write its time series to " +
                      ctx.csv_path);
@@ -219,7 +273,7 @@ int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out) {
   w.key("scenario").value(s.name());
   w.key("seed").value(seed);
   w.key("description").value(s.description());
-  write_parameters(w, ps);
+  write_parameters(w, ps, r.used);
   write_metrics(w, r);
   w.key("claims").begin_array();
   for (const Claim& c : r.claims) {
@@ -316,7 +370,7 @@ void write_summary(JsonWriter& w, const std::vector<std::string>& names,
 }
 
 int cmd_montecarlo(const Options& o, const Catalog& catalog, std::ostream& out,
-                   std::ostream& err) {
+                   std::ostream& err, bool err_is_terminal) {
   const Scenario& s = lookup(catalog, o.scenario);
   const ParamSet ps = declared_params(s, o.sets);
   const std::uint64_t runs = *o.runs;
@@ -333,8 +387,17 @@ int cmd_montecarlo(const Options& o, const Catalog& catalog, std::ostream& out,
     RunContext ctx;
     ctx.seed = seed0 + k;
     ctx.quiet = true;
+    ProgressReporter progress(err,
+                              s.name() + " [" + std::to_string(k + 1) + "/" +
+                                  std::to_string(runs) + "] seed=" + std::to_string(ctx.seed),
+                              o.progress, err_is_terminal);
+    if (progress.enabled())
+      ctx.progress = [&progress](double t0, double t, double t_end) {
+        progress.update(t0, t, t_end);
+      };
     const auto t0 = std::chrono::steady_clock::now();
     const RunResult r = run_scenario(s, ps, ctx);
+    progress.finish();
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (k == 0) {
       for (const auto& m : r.metrics) names.push_back(m.first);
@@ -397,6 +460,27 @@ int cmd_montecarlo(const Options& o, const Catalog& catalog, std::ostream& out,
 
 // ---- public ---------------------------------------------------------------------------------
 
+void check_run_parameters(const ParamSet& ps) {
+  // duration_s and control_period_s are declared as numbers by every scenario (contract).
+  for (const char* key : {"duration_s", "control_period_s"})
+    if (has_number(ps, key) && !(ps.get_number(key) > 0.0)) refuse(ps, key, "> 0");
+  check_steps(ps, "control_period_s", "control steps");
+  // CVODE tolerances (SUNDIALS accepts reltol >= 0 and abstol >= 0, but rtol = 0 asks for
+  // exact arithmetic, rtol >= 1 for no accuracy, and atol = 0 makes the error weight of a zero
+  // state component infinite, so CVODE fails on the first step).
+  if (has_number(ps, "rtol")) {
+    const double rtol = ps.get_number("rtol");
+    if (!(rtol > 0.0 && rtol < 1.0)) refuse(ps, "rtol", "> 0 and < 1");
+  }
+  if (has_number(ps, "atol") && !(ps.get_number("atol") > 0.0)) refuse(ps, "atol", "> 0");
+  if (has_number(ps, "rk4_step_s")) {
+    if (!(ps.get_number("rk4_step_s") > 0.0)) refuse(ps, "rk4_step_s", "> 0");
+    if (ps.has("integrator") && ps.at("integrator").kind == ParamKind::name &&
+        ps.get_name("integrator") == "rk4")
+      check_steps(ps, "rk4_step_s", "RK4 steps");
+  }
+}
+
 const Scenario* Catalog::find(const std::string& name) const {
   for (const Scenario* s : scenarios)
     if (s->name() == name) return s;
@@ -449,6 +533,12 @@ Options parse_options(const std::string& command, const std::vector<std::string>
         opt = a.substr(0, eq);
         val = a.substr(eq + 1);
         inline_val = true;
+      }
+      if ((is_run || is_mc) && opt == "--progress") {
+        if (inline_val) throw UsageError("--progress takes no value");
+        if (o.progress) throw UsageError("--progress given twice");
+        o.progress = true;
+        continue;
       }
       const bool known = ((is_run || is_mc) && (opt == "--set" || opt == "--out")) ||
                          (is_run && opt == "--seed") ||
@@ -516,10 +606,10 @@ std::string usage() {
 commands:
   list                      scenario names, one a line
   describe NAME             NAME's description and parameters (default, unit, source)
-  run NAME [--set KEY=VALUE]... [--seed N] [--out DIR]
+  run NAME [--set KEY=VALUE]... [--seed N] [--out DIR] [--progress]
                             run once; writes DIR/NAME.csv (time series) and DIR/NAME.json
-                            (parameters used, metrics, claims, plots)
-  montecarlo NAME --runs R [--seed0 S] [--out DIR] [--set KEY=VALUE]...
+                            (every value used incl. --seed draws, metrics, claims, plots)
+  montecarlo NAME --runs R [--seed0 S] [--out DIR] [--set KEY=VALUE]... [--progress]
                             R runs with seeds S..S+R-1; writes per-run metrics to
                             DIR/NAME-montecarlo.csv and min/median/max to NAME-montecarlo.json
   help                      this text
@@ -532,7 +622,14 @@ options:
   --runs R         number of Monte Carlo runs (required)
   --seed0 S        first Monte Carlo seed (default 1)
   --out DIR        output directory (default out; created if missing)
+  --progress       progress on stderr (simulated time, wall time, ETA) at most once a second,
+                   and a final line; shown anyway, in place, when stderr is a terminal and the
+                   run lasts over 3 s. stdout is the same either way.
   Options also accept the form --opt=VALUE.
+
+Refused before running (exit 2): duration_s or control_period_s <= 0; more than 1e8 steps
+(duration_s / control_period_s, or duration_s / rk4_step_s with integrator=rk4); where
+declared, rtol outside (0, 1), atol <= 0, rk4_step_s <= 0.
 
 The last line on stdout is one JSON object: {"scenario": ..., "seed": N, "metrics": {...}}
 for run, {"scenario": ..., "runs": R, "seed0": S, "metrics": {m: {"min", "median", "max"}}}
@@ -543,7 +640,7 @@ output file is left behind.
 }
 
 int run_cli(const std::vector<std::string>& args, const Catalog& catalog, std::ostream& out,
-            std::ostream& err) {
+            std::ostream& err, bool err_is_terminal) {
   const auto fail = [&](int status, const std::string& msg) {
     out.flush();
     err << kProg << ": error: " << one_line(msg) << std::endl;
@@ -567,8 +664,8 @@ int run_cli(const std::vector<std::string>& args, const Catalog& catalog, std::o
     }
     if (cmd == "list") return cmd_list(o, catalog, out);
     if (cmd == "describe") return cmd_describe(o, catalog, out);
-    if (cmd == "run") return cmd_run(o, catalog, out);
-    return cmd_montecarlo(o, catalog, out, err);
+    if (cmd == "run") return cmd_run(o, catalog, out, err, err_is_terminal);
+    return cmd_montecarlo(o, catalog, out, err, err_is_terminal);
   } catch (const UsageError& e) {
     return fail(kExitUsage, e.what());
   } catch (const ParamError& e) {
@@ -589,7 +686,7 @@ int cli_main(int argc, char** argv) {
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i) args.emplace_back(argv[i]);
   try {
-    return run_cli(args, Catalog::registered(), std::cout, std::cerr);
+    return run_cli(args, Catalog::registered(), std::cout, std::cerr, ::isatty(2) == 1);
   } catch (const std::exception& e) {  // e.g. a scenario factory throwing
     std::cerr << kProg << ": error: internal error: " << one_line(e.what()) << std::endl;
     return kExitFailure;

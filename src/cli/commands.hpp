@@ -41,8 +41,19 @@ struct Options {
   std::optional<std::uint64_t> runs;                      // montecarlo: --runs R (>= 1)
   std::optional<std::uint64_t> seed0;                     // montecarlo: --seed0 S (default 1)
   std::optional<std::string> out_dir;                     // --out DIR (default "out")
+  bool progress = false;                                  // run, montecarlo: --progress
   bool help = false;                                      // --help / -h
 };
+
+//! The most simulation steps a run may take: duration_s / control_period_s (and, with
+//! integrator=rk4, duration_s / rk4_step_s) above this is refused before running (exit 2).
+constexpr double kMaxSteps = 1e8;
+
+//! The checks every scenario's parameters pass before a run (the one place for them; throws
+//! ParamError naming the key): duration_s > 0 and control_period_s > 0; duration_s /
+//! control_period_s <= kMaxSteps; when declared: rtol in (0, 1), atol > 0, rk4_step_s > 0 and,
+//! with integrator=rk4, duration_s / rk4_step_s <= kMaxSteps.
+void check_run_parameters(const ParamSet& ps);
 
 //! Parses the arguments of `command` ("run", "montecarlo", "describe", "list"); throws
 //! UsageError (unknown option, missing value, duplicate option or --set key, --set without
@@ -59,8 +70,10 @@ std::string usage();
 std::string one_line(const std::string& msg);
 
 //! Runs one command line (args exclude the program name); returns the exit status.
+//! `err_is_terminal`: err is a terminal (progress lines are then shown for long runs even
+//! without --progress, rewritten in place).
 int run_cli(const std::vector<std::string>& args, const Catalog& catalog, std::ostream& out,
-            std::ostream& err);
+            std::ostream& err, bool err_is_terminal = false);
 
 //! main() of adcs-sim: the registered scenarios, std::cout / std::cerr, signal cleanup.
 int cli_main(int argc, char** argv);

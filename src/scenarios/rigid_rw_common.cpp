@@ -52,7 +52,8 @@ RigidRwPlant::Params rigid_rw_plant_params(const ParamSet& p) {
   return pp;
 }
 
-RigidRwPlant::State rigid_rw_initial_state(const ParamSet& p, std::uint64_t seed) {
+RigidRwPlant::State rigid_rw_initial_state(const ParamSet& p, std::uint64_t seed,
+                                           std::vector<UsedValue>* used) {
   RigidRwPlant::State x;
   Vec3 sigma = p.get_vec<3>("sigma0_BN");
   Vec3 omega = p.get_vec<3>("omega0_BN_B");
@@ -65,6 +66,14 @@ RigidRwPlant::State rigid_rw_initial_state(const ParamSet& p, std::uint64_t seed
     sigma = quat_to_mrp(QuaternionSF::from_scalar_first(q).canonical());
     const double d = p.get_number("omega0_dispersion_rad_s");
     for (int i = 0; i < 3; ++i) omega(i) = rng.uniform(-d, d);
+    if (used) {
+      const std::string from = "drawn from --seed " + std::to_string(seed) + ": ";
+      used->push_back(UsedValue::vector("sigma0_BN", {sigma(0), sigma(1), sigma(2)}, "-",
+                                        from + "uniform over SO(3), short MRP set"));
+      used->push_back(UsedValue::vector(
+          "omega0_BN_B", {omega(0), omega(1), omega(2)}, "rad/s",
+          from + "uniform in +-omega0_dispersion_rad_s per axis"));
+    }
   }
   x.head<3>() = sigma;
   x.segment<3>(3) = omega;

@@ -37,7 +37,10 @@ RigidRwPlant::Params rigid_rw_plant_params(const ParamSet& p);
 //! Initial state. seed == 0: the declared sigma0/omega0/Omega0. seed > 0: sigma0_BN uniform over
 //! SO(3) (short MRP set) and omega0_BN_B uniform in +-omega0_dispersion_rad_s per axis, drawn
 //! with our portable generator, so the same seed gives the same run on every machine.
-RigidRwPlant::State rigid_rw_initial_state(const ParamSet& p, std::uint64_t seed);
+//! When `used` is given and seed > 0, the drawn sigma0_BN and omega0_BN_B are appended to it
+//! (RunResult::used), so the run's JSON records the initial state actually simulated.
+RigidRwPlant::State rigid_rw_initial_state(const ParamSet& p, std::uint64_t seed,
+                                           std::vector<UsedValue>* used = nullptr);
 
 //! The CSV columns t, sigma_BN_1..3, omega_BN_B_1..3, Omega_1..4, then `extra`.
 std::vector<Column> rigid_rw_columns(const std::vector<Column>& extra = {});

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/control/mrp_pd.hpp"
@@ -69,7 +70,8 @@ class RigidRwMrpPd final : public Scenario {
     AttitudeReference ref;
     ref.sigma_RN = p.get_vec<3>("sigma_RN");
 
-    RigidRwPlant::State x = rigid_rw_initial_state(p, ctx.seed);
+    std::vector<UsedValue> used;
+    RigidRwPlant::State x = rigid_rw_initial_state(p, ctx.seed, &used);
     const Vec3 H0 = plant.momentum_N(x);
 
     std::unique_ptr<CsvRecorder> csv;
@@ -130,6 +132,7 @@ class RigidRwMrpPd final : public Scenario {
     const double limit = p.get_number("torque_limit_Nm");
     const double H_scale = std::max(H0.norm(), pp.J_B.norm() * 1e-3);  // H0 may be 0 (rest)
     RunResult r;
+    r.used = std::move(used);
     r.metrics = {{"att_err_final_rad", att_err_final},
                  {"settle_s", settle},
                  {"torque_max_Nm", torque_max},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 #include "scenarios/rigid_rw_common.hpp"
 #include "sim/sampled_data.hpp"
@@ -39,7 +40,8 @@ class RigidRwTorqueFree final : public Scenario {
 
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
     const RigidRwPlant plant(rigid_rw_plant_params(p));
-    RigidRwPlant::State x = rigid_rw_initial_state(p, ctx.seed);
+    std::vector<UsedValue> used;
+    RigidRwPlant::State x = rigid_rw_initial_state(p, ctx.seed, &used);
     const Vec3 H0 = plant.momentum_N(x);
     const double T0 = plant.kinetic_energy(x);
 
@@ -69,6 +71,7 @@ class RigidRwTorqueFree final : public Scenario {
     if (csv) csv->close();
 
     RunResult r;
+    r.used = std::move(used);
     const double momentum_drift_rel = dH_max / H0.norm();
     const double energy_drift_rel = dT_max / T0;
     r.metrics = {{"momentum_drift_rel", momentum_drift_rel}, {"energy_drift_rel", energy_drift_rel}};

@@ -10,7 +10,10 @@
 //    unless ctx.csv_path is empty, and prints nothing to stdout when ctx.quiet.
 //  - run() throws ParamError for an invalid parameter value (adcs-sim exits 2) and any other
 //    exception for a simulation failure (adcs-sim exits 1). Either way no output is kept.
+//  - Every value run() uses that is not the declared one (a --seed draw, a derived value)
+//    goes into RunResult::used, so the run's JSON holds every value actually used.
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -59,6 +62,33 @@ struct RunContext {
   std::uint64_t seed = 0;
   //! Monte Carlo runs: no chatter on stdout.
   bool quiet = false;
+  //! Progress sink (adcs-sim --progress): (t0, t, t_end) [s] of the simulation loop. adcs-sim
+  //! installs it around run() as the hook of the shared sampled-data loop (ProgressScope in
+  //! sim/sampled_data.hpp), so scenarios need not call it; one with its own loop may.
+  std::function<void(double t0_s, double t_s, double t_end_s)> progress;
+};
+
+//! A value a run actually used in place of, or in addition to, the declared parameters: e.g.
+//! the initial attitude drawn from --seed. adcs-sim writes it into the JSON "parameters" (over
+//! the declared value of the same key, which is kept as "declared").
+struct UsedValue {
+  std::string key;
+  ParamKind kind = ParamKind::number;
+  ParamValue value;    //!< only the member of `kind` is meaningful
+  std::string unit;
+  std::string source;  //!< how it was obtained, e.g. "drawn from --seed 3: ..."
+
+  static UsedValue number(std::string key, double x, std::string unit, std::string source) {
+    UsedValue u{std::move(key), ParamKind::number, {}, std::move(unit), std::move(source)};
+    u.value.number = x;
+    return u;
+  }
+  static UsedValue vector(std::string key, std::vector<double> v, std::string unit,
+                          std::string source) {
+    UsedValue u{std::move(key), ParamKind::vector, {}, std::move(unit), std::move(source)};
+    u.value.vector = std::move(v);
+    return u;
+  }
 };
 
 struct RunResult {
@@ -66,6 +96,9 @@ struct RunResult {
   std::vector<Claim> claims;
   std::vector<PlotSpec> plots;
   std::vector<Table> tables;  //!< extra CSV files (written atomically with the run's outputs)
+  //! Values used other than the declared ones (--seed draws, derived values); see UsedValue.
+  //! Empty when the run used exactly the declared parameters (e.g. seed 0).
+  std::vector<UsedValue> used;
 
   //! The metric's value; NaN when there is no metric of that name (see has_metric).
   double metric(const std::string& name) const {

@@ -12,8 +12,13 @@
 //      integrator.advance(t_{k+1}, u, x) with u held (ZOH).
 // Finally, at t_end: plant.normalize(x) if any, then observer(t_end, x, u) once more with the last
 // command. So normalize and the observer are called N + 1 times, the controller N times.
+//
+// Progress: while a ProgressScope is alive on the calling thread (adcs-sim installs one around
+// Scenario::run when progress is wanted), the loop reports (t_{k+1}, t_end) after every
+// interval as (t0, t_{k+1}, t_end); the sink rate-limits its output. Without one the cost is one test per sample.
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -22,6 +27,29 @@
 #include "sim/sim_error.hpp"
 
 namespace adcs::sim {
+
+//! Progress sink of run_sampled_data: (start of the loop t0, simulated time t, end t_end) [s].
+using ProgressFn = std::function<void(double t0_s, double t_s, double t_end_s)>;
+
+//! The calling thread's current progress sink (empty: none).
+inline ProgressFn& current_progress() {
+  thread_local ProgressFn sink;
+  return sink;
+}
+
+//! Installs `sink` as the thread's progress sink for its lifetime (restores the previous one).
+class ProgressScope {
+ public:
+  explicit ProgressScope(ProgressFn sink) : previous_(std::move(current_progress())) {
+    current_progress() = std::move(sink);
+  }
+  ~ProgressScope() { current_progress() = std::move(previous_); }
+  ProgressScope(const ProgressScope&) = delete;
+  ProgressScope& operator=(const ProgressScope&) = delete;
+
+ private:
+  ProgressFn previous_;
+};
 
 struct SampledDataOptions {
   double t0 = 0.0;             //!< [s] time of the first sample
@@ -44,6 +72,7 @@ void run_sampled_data(const Plant& plant, Integrator& integrator, typename Plant
                    " s, t_end = " + format_double(options.t_end) + " s)");
   const std::size_t n = interval_count(options.t_end - t0, period);  // checks period > 0
 
+  const ProgressFn& progress = current_progress();
   Input u = Input::Zero();
   for (std::size_t k = 0; k < n; ++k) {
     // Why t0 + k*T and not t += T: no drift of the sample times over long runs.
@@ -54,6 +83,7 @@ void run_sampled_data(const Plant& plant, Integrator& integrator, typename Plant
     observer(t_k, std::as_const(x), std::as_const(u));
     integrator.reset(t_k, x);
     integrator.advance(t_next, std::as_const(u), x);
+    if (progress) progress(t0, t_next, options.t_end);
   }
   normalize_if_any(plant, x);
   observer(options.t_end, std::as_const(x), std::as_const(u));

@@ -126,8 +126,32 @@ if [ -n "$vec_line" ]; then
 else
   echo "note: $S has no fixed-size vector parameter; vector checks skipped" >&2
 fi
+# Values whose derived quantities make no sense are refused before running (issue 15).
+expect_usage_error "duration_s=1e300 (step count overflows)" run "$S" --set duration_s=1e300
+expect_usage_error "more than 1e8 steps" run "$S" --set duration_s=1e8
+expect_usage_error "rtol=0" run "$S" "${QUICK[@]}" --set rtol=0
+expect_usage_error "atol=-1" run "$S" "${QUICK[@]}" --set atol=-1
+expect_usage_error "montecarlo rtol=0" montecarlo "$S" --runs 2 --set rtol=0
+expect_usage_error "--progress with a value" run "$S" "${QUICK[@]}" --progress=1
 expect_usage_error "montecarlo without --runs" montecarlo "$S" "${QUICK[@]}"
 expect_usage_error "montecarlo unknown key" montecarlo "$S" --runs 2 --set no_such_key=1
+
+# --seed draws are in the JSON (issue 15): $S starts from a drawn attitude, not the declared one.
+fresh
+sim run "$S" "${QUICK[@]}" --seed 3 --out "$dir"
+[ "$rc" -eq 0 ] || { show; fail "seed 3 run: exit $rc"; }
+"$PY" -c '
+import json, sys
+p = json.load(open(sys.argv[1]))["parameters"]["sigma0_BN"]
+assert p["value"] != [0, 0, 0] and p["source"].startswith("drawn from --seed 3"), p
+assert p["declared"] == [0, 0, 0], p
+' "$dir/$S.json" || fail "seed 3 run: the drawn sigma0_BN is not in $S.json"
+[ ! -s "$TMP/stderr" ] || { show; fail "run without --progress wrote to stderr"; }
+before="$(cat "$TMP/stdout")"
+sim run "$S" "${QUICK[@]}" --seed 3 --out "$dir" --progress
+[ "$rc" -eq 0 ] || { show; fail "--progress run: exit $rc"; }
+[ "$(cat "$TMP/stdout")" = "$before" ] || { show; fail "--progress changed stdout"; }
+grep -q "^adcs-sim: $S: done, t = 2 / 2 s, wall " "$TMP/stderr" || { show; fail "--progress: no final line"; }
 
 # A failed run leaves an earlier output untouched.
 fresh

@@ -4,8 +4,10 @@
 
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "scenario_test_util.hpp"
+#include "scenarios/rigid_rw_common.hpp"
 
 namespace {
 using adcs::sim::ParamSet;
@@ -65,6 +67,32 @@ TEST(RigidRwMrpPd, SameInputsSameOutputsBitForBit) {
         << a.metrics[i].first;
   const RunResult c = run("rigid-rw-mrp-pd", {{"duration_s", "100"}}, 6);
   EXPECT_NE(metric(a, "att_err_final_rad"), metric(c, "att_err_final_rad"));  // seed matters
+}
+
+// Issue 15 item 5: the drawn initial state is reported as used (for the run's JSON).
+TEST(RigidRwScenarios, SeedDrawsAreReportedAsUsed) {
+  const adcs::sim::Scenario* s = adcs::sim::find_scenario("rigid-rw-mrp-pd");
+  ASSERT_NE(s, nullptr);
+  ParamSet p;
+  s->declare(p);
+  std::vector<adcs::sim::UsedValue> used;
+  const auto x0 = adcs::sim::rigid_rw_initial_state(p, 0, &used);
+  EXPECT_TRUE(used.empty());
+  EXPECT_EQ(x0.head<3>().norm(), 0.0);
+  const auto x3 = adcs::sim::rigid_rw_initial_state(p, 3, &used);
+  ASSERT_EQ(used.size(), 2u);
+  EXPECT_EQ(used[0].key, "sigma0_BN");
+  EXPECT_EQ(used[1].key, "omega0_BN_B");
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(used[0].value.vector.at(static_cast<std::size_t>(i)), x3(i));
+    EXPECT_EQ(used[1].value.vector.at(static_cast<std::size_t>(i)), x3(3 + i));
+  }
+  EXPECT_GT(x3.head<3>().norm(), 0.1);
+  EXPECT_TRUE(run("rigid-rw-torquefree", {{"duration_s", "1"}}).used.empty());
+  const RunResult r = run("rigid-rw-torquefree", {{"duration_s", "1"}}, 3);
+  ASSERT_EQ(r.used.size(), 2u);
+  EXPECT_EQ(r.used[0].key, "sigma0_BN");
+  EXPECT_EQ(run("rigid-rw-mrp-pd", {{"duration_s", "1"}}, 3).used.size(), 2u);
 }
 
 TEST(RigidRwScenarios, RejectUnphysicalParameters) {
