@@ -97,6 +97,10 @@ class FlexibleScenario final : public Scenario {
     if (dropout_) {
       p.number("dropout_start_s", 50.0, "s", "ours: in steady tracking, the funnel at rho_inf");
       p.number("dropout_duration_s", 2.0, "s", "issue 7: the rate measurement is NaN for 2 s");
+      p.name("on_failure", "hold_last", {"hold_last", "safe_command"},
+             "issue 7: the torque is held through the dropout (the paper's ZOH reading); safe_command "
+             "(zero torque, the library default) leaves the funnel within the 2 s and the paper law has "
+             "no recovery (issue 15: funnel recovery, not yet built)");
     }
   }
 
@@ -203,6 +207,7 @@ class FlexibleScenario final : public Scenario {
     g.compensator.gamma = p.get_number("gamma");
     g.units = p.get_name("units") == "U_deg" ? AngleUnits::degrees : AngleUnits::radians;
     g.control_period_s = T;
+    if (dropout_ && p.get_name("on_failure") == "hold_last") g.on_failure = FailurePolicy::hold_last;
     PpcParams<3> pp;
     const Vec3 rho0 = d2r * p.get_vec<3>("rho0_deg"), rinf = d2r * p.get_vec<3>("rho_inf_deg");
     const Vec3 k_rho = p.get_vec<3>("k_rho");

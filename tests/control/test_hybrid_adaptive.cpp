@@ -311,8 +311,10 @@ TEST(HybridAdaptive, LyapunovFunctionDecreasesS12) {
   EXPECT_EQ(loop.ctrl.safeguard_count(), 0u);
 }
 
-TEST(HybridAdaptive, BadInputHoldsCommandAndEstimates) {
-  Ctrl c(controller_params());
+TEST(HybridAdaptive, BadInputHoldsCommandUnderHoldLastAndEstimates) {
+  Ctrl::Params params = controller_params();
+  params.on_failure = adcs::FailurePolicy::hold_last;  // default zero: test_failure_policy.cpp
+  Ctrl c(params);
   Ctrl::Measurement m;
   m.sigma_BN << 0.01, 0.02, -0.01;
   m.omega_BN_B << 1e-3, -2e-3, 5e-4;

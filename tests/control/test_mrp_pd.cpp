@@ -66,8 +66,10 @@ TEST(MrpPd, TracksAroundTheReferenceNotTheOrigin) {
   EXPECT_LT(out.L_r_B.norm(), 1e-14);
 }
 
-TEST(MrpPd, NonFiniteInputHoldsLastCommandAndResetClears) {
-  Ctrl c(params());
+TEST(MrpPd, NonFiniteInputHoldsLastCommandUnderHoldLastAndResetClears) {
+  Ctrl::Params hold = params();
+  hold.on_failure = adcs::FailurePolicy::hold_last;  // default zero: test_failure_policy.cpp
+  Ctrl c(hold);
   Ctrl::Measurement m;
   m.sigma_BN << 0.1, 0, 0;
   adcs::AttitudeReference r;

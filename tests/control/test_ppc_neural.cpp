@@ -1,7 +1,7 @@
 // seed 002 laws (spec §B.3) on the flexible plant, closed loop at 1e-4 s with ZOH and RK4:
 // B-S9 (ṡ formula against a finite difference; the oracle ṡ = −R K s), B-S12 (μ̂ ≥ 0, robust
 // denominator ≥ σ), B-S14 (z never beyond its initial value), the ATC closed loop ṡ_e = −K s_e
-// with the oracle, bad input (command and estimates held), funnel edge status, reset and
+// with the oracle, bad input (estimates held; the command per the failure policy), funnel edge status, reset and
 // bit-for-bit determinism.
 #include <gtest/gtest.h>
 
@@ -129,8 +129,11 @@ TEST(PpcNeural, FunnelHeldMuNonNegativeAndZNeverBeyondItsStartBS12BS14) {
   EXPECT_EQ(loop.law.branch(2), adcs::PpcBranch::negative);
 }
 
-TEST(PpcNeural, BadInputHoldsCommandAndEstimates) {
-  Loop<adcs::PpcNeural> loop(ppc_params());
+TEST(PpcNeural, BadInputGivesTheHeldCommandUnderHoldLastAndKeepsEstimates) {
+  // (The default policy outputs zero torque instead: tests/control/test_failure_policy.cpp.)
+  adcs::PpcNeuralParams params = ppc_params();
+  params.gains.on_failure = adcs::FailurePolicy::hold_last;
+  Loop<adcs::PpcNeural> loop(params);
   for (int k = 0; k < 50; ++k) loop.step();
   const adcs::Mat<7, 3> W = loop.law.weights();
   const double mu = loop.law.mu();

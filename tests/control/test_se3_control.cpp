@@ -106,10 +106,14 @@ TEST(PrescribedTimeSe3, LyapunovFunctionDecreasesWithoutDisturbanceA11_9) {
   EXPECT_LT(p.error().eta.norm(), 1e-4);
 }
 
-TEST(Se3Laws, BadInputHoldsTheCommandAndTheEstimate) {
+TEST(Se3Laws, BadInputHoldsTheCommandUnderHoldLastAndTheEstimate) {
   Pair p(0);
-  adcs::PrescribedTimeSe3 ptc(adcs::PrescribedTimeSe3Params{}, adcs::se3_chaser_nominal_params(p.sp));
-  adcs::FtsmcSe3 fts(adcs::FtsmcSe3Params{}, adcs::se3_chaser_nominal_params(p.sp));
+  adcs::PrescribedTimeSe3Params pp;
+  pp.on_failure = adcs::FailurePolicy::hold_last;
+  adcs::FtsmcSe3Params fp;
+  fp.on_failure = adcs::FailurePolicy::hold_last;
+  adcs::PrescribedTimeSe3 ptc(pp, adcs::se3_chaser_nominal_params(p.sp));
+  adcs::FtsmcSe3 fts(fp, adcs::se3_chaser_nominal_params(p.sp));
   Vec6 u_ptc, u_fts;
   ASSERT_EQ(ptc.step(p.c, p.desired(), u_ptc), Status::ok);
   ASSERT_EQ(fts.step(p.c, p.desired(), u_fts), Status::ok);

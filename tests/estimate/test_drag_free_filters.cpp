@@ -164,7 +164,7 @@ TEST(Pid, OverflowIsRefusedAndTheIntegralKept) {
   adcs::Pid<1> pid(p);
   adcs::Vec<1> out(3.0);
   EXPECT_EQ(pid.step(adcs::Vec<1>(1e308), adcs::Vec<1>(0.0), out), Status::out_of_range);
-  EXPECT_EQ(out(0), 3.0);
+  EXPECT_EQ(out(0), 0.0);  // the failure command: zero (core/failure_policy.hpp)
   EXPECT_EQ(pid.integral()(0), 0.0);
   adcs::PidParams<1> pi;
   pi.ki(0) = 1e-10;
@@ -224,7 +224,9 @@ TEST(Adrc, LinearZonePolesAndRouthB11_9) {
 }
 
 TEST(Adrc, CommandsAreClippedToTheCubeAndBadInputHeldB11_11) {
-  adcs::DragFreeAdrc c(adcs::DragFreeAdrcParams{});
+  adcs::DragFreeAdrcParams hold;
+  hold.on_failure = adcs::FailurePolicy::hold_last;  // default zero: test_failure_policy.cpp
+  adcs::DragFreeAdrc c(hold);
   adcs::Vec<27> x = adcs::Vec<27>::Zero();
   x.segment<3>(Ix::r) << 0.5, -0.5, 0.1;  // far away: huge raw commands
   x.segment<3>(Ix::T_Dsc) << 1.0, -1.0, 0.0;

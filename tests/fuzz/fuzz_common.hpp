@@ -23,6 +23,7 @@
 #include <cstring>
 #include <limits>
 
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 
@@ -181,6 +182,16 @@ bool finite(const Eigen::DenseBase<Derived>& x) noexcept {
 //! The statuses a step() documents as "result applied" (possibly degraded); every other status
 //! promises "nothing applied": outputs held, state untouched (core/status.hpp).
 inline bool applied(adcs::Status s) noexcept { return adcs::usable(s); }
+
+//! The command a rejected step must output (core/failure_policy.hpp): every bit zero under
+//! safe_command, the last good command bit for bit under hold_last.
+template <class M>
+bool is_failure_command(adcs::FailurePolicy policy, const M& out, const M& last_good) noexcept {
+  if (policy == adcs::FailurePolicy::hold_last) return same_bits_mat(out, last_good);
+  for (Eigen::Index i = 0; i < out.size(); ++i)
+    if (!(out(i) == 0.0)) return false;
+  return true;
+}
 
 //! Checks shared by every step: finite output, non_finite_input exactly when an input was
 //! non-finite, and (caller's part) state untouched unless applied.

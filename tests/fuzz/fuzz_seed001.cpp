@@ -33,6 +33,7 @@ const Hybrid& hybrid_proto(int variant) {
         Hybrid::Params p;
         p.nominal = adcs::pyramid_4cmg_3rw_nominal();
         p.adaptation_step = adcs::AdaptationStep::normalized;
+        p.on_failure = adcs::FailurePolicy::hold_last;  // both failure policies get fuzzed
         return p;
       }()),
       Hybrid([] {
@@ -46,6 +47,7 @@ const Hybrid& hybrid_proto(int variant) {
         p.nominal = adcs::pyramid_4cmg_3rw_nominal();
         p.adaptation_step = adcs::AdaptationStep::normalized;
         p.control_period_s = 0.1;
+        p.on_failure = adcs::FailurePolicy::hold_last;
         return p;
       }()),
   };
@@ -121,7 +123,8 @@ void fuzz_hybrid(fuzz::Reader& r) {
     const HybridSnapshot after(ctrl);
     if (!fuzz::applied(s)) {
       FUZZ_CHECK(after == before, "HybridAdaptive: rejected step changed the estimates");
-      FUZZ_CHECK(fuzz::same_bits_mat(out.u, last.u), "HybridAdaptive: rejected step did not hold the command");
+      FUZZ_CHECK(fuzz::is_failure_command(ctrl.params().on_failure, out.u, last.u),
+                 "HybridAdaptive: rejected step did not output the failure command");
       continue;
     }
     last = out;
@@ -278,9 +281,11 @@ void fuzz_mrp_pd(fuzz::Reader& r) {
     fuzz::check_status_vs_input(s, finite_in, "MrpPd: non-finite input not rejected");
     check_allocation(r.vec<3>());  // the allocator on its own, any request
     if (!fuzz::applied(s)) {
-      FUZZ_CHECK(fuzz::same_bits_mat(out.L_r_B, last.L_r_B) && fuzz::same_bits_mat(out.sigma_BR, last.sigma_BR) &&
-                     fuzz::same_bits_mat(out.omega_BR_B, last.omega_BR_B),
-                 "MrpPd: rejected step did not hold the command");
+      const adcs::FailurePolicy policy = adcs::FailurePolicy::safe_command;  // make_pd(): the default
+      FUZZ_CHECK(fuzz::is_failure_command(policy, out.L_r_B, last.L_r_B) &&
+                     fuzz::is_failure_command(policy, out.sigma_BR, last.sigma_BR) &&
+                     fuzz::is_failure_command(policy, out.omega_BR_B, last.omega_BR_B),
+                 "MrpPd: rejected step did not output the failure command");
       continue;
     }
     FUZZ_CHECK(s == Status::ok, "MrpPd: undocumented usable status");

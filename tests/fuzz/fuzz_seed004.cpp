@@ -141,6 +141,7 @@ void fuzz_chain(int config, fuzz::Reader& r) {
   ap.x_law = static_cast<adcs::DragFreeXLaw>((config >> 2) % 3);
   ap.integral = (config & 32) ? adcs::IntegralForm::raw_sum : adcs::IntegralForm::scaled_sum;
   ap.pid_ki = (config & 64) ? 0.5 : 0.0;
+  ap.on_failure = (config & 128) ? adcs::FailurePolicy::hold_last : adcs::FailurePolicy::safe_command;
   adcs::DragFreeAdrc adrc(ap);
   FUZZ_CHECK(adrc.status() == Status::ok, "set-up: ADRC");
   const adcs::FusedCovariance mode =
@@ -226,7 +227,7 @@ void fuzz_chain(int config, fuzz::Reader& r) {
         fuzz::check_status_vs_input(s, fuzz::finite(x_hat) && fuzz::finite(F_D) && fuzz::finite(phi_cmd),
                                     "DragFreeAdrc: non-finite input not rejected");
         if (!fuzz::applied(s)) {
-          FUZZ_CHECK(fuzz::same_bits_mat(out, u) && fuzz::same_bits_mat(adrc.attitude_integral(), ia) &&
+          FUZZ_CHECK(fuzz::is_failure_command(ap.on_failure, out, u) && fuzz::same_bits_mat(adrc.attitude_integral(), ia) &&
                          fuzz::same_bits_mat(adrc.drag_free_integral(), id),
                      "DragFreeAdrc: rejected step changed the command or an integral");
           break;
@@ -356,23 +357,28 @@ void fuzz_pid(int config, fuzz::Reader& r) {
   p.ki = (config & 1) ? Vec3(0.5, 0.0, 2.0) : Vec3::Zero();
   p.kd = Vec3(9.0, 0.0, 1.0);
   p.period_s = (config & 2) ? 1.0 : 0.1;
+  p.on_failure = (config & 4) ? adcs::FailurePolicy::hold_last : adcs::FailurePolicy::safe_command;
   adcs::Pid<3> pid(p);
   Vec3 last = Vec3::Constant(-7.0);
+  Vec3 last_good = Vec3::Zero();  // the Pid's own last good output (zero after construction)
   for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
     const Vec3 e_p = r.vec<3>(), e_d = r.vec<3>();
     const Vec3 i0 = pid.integral();
     Vec3 out = last;
     const Status s = pid.step(e_p, e_d, out);
+    const Vec3 held = last_good;
     fuzz::stat(7, "Pid<3>", s);
     fuzz::check_status_vs_input(s, fuzz::finite(e_p) && fuzz::finite(e_d), "Pid: non-finite input not rejected");
     FUZZ_CHECK(fuzz::finite(out) || !fuzz::finite(last), "Pid: non-finite output");
     if (!fuzz::applied(s)) {
-      FUZZ_CHECK(fuzz::same_bits_mat(out, last) && fuzz::same_bits_mat(pid.integral(), i0),
+      FUZZ_CHECK((fuzz::is_failure_command(p.on_failure, out, held) || !fuzz::finite(held)) &&
+                     fuzz::same_bits_mat(pid.integral(), i0),
                  "Pid: rejected step changed the output or the integral");
       continue;
     }
     FUZZ_CHECK(s == Status::ok && fuzz::finite(out) && fuzz::finite(pid.integral()), "Pid: non-finite result");
     last = out;
+    last_good = out;
   }
 }
 }  // namespace

@@ -36,10 +36,11 @@ class AdaptiveTracking {
   void reset() noexcept { core_.reset(); }
 
   //! One control sample. ok; non_finite_input; singular (gimbal lock); out_of_range (a
-  //! non-finite result). Except for ok, `out` is the last good command, estimates untouched.
+  //! non-finite result). Except for ok, `out` is the failure command (zero torque, or the last good
+  //! command under gains.on_failure = hold_last), estimates untouched.
   [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
                             Diagnostics* diag = nullptr) noexcept {
-    out = core_.last();
+    out = core_.failure_command();
     if (core_.status() != Status::ok) return core_.status();
     EulerTrackingCore::Kinematics k;
     const Status ks = core_.kinematics(m, r, k);

@@ -15,6 +15,7 @@
 
 #include "adcs/actuator/saturation.hpp"
 #include "adcs/control/pid.hpp"
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/plant/drag_free.hpp"
@@ -56,6 +57,7 @@ struct DragFreeAdrcParams {
   double limit = 0.03;                                   //!< ρ1 = ρ2 = ρ3 [N m, N, N m]
   DragFreeXLaw x_law = DragFreeXLaw::nlpid;
   double pid_kp = 5.55, pid_ki = 0.0, pid_kd = 9.0;      //!< Fig. 9 PID [N/m, -, N s/m]
+  FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed sample: u = 0, or hold
 };
 
 class DragFreeAdrc {
@@ -83,9 +85,10 @@ class DragFreeAdrc {
   //! One 0.1 s sample. x_hat: Algorithm 1's posterior (27 states, after fusion of the previous
   //! sample); F_D_hat: Algorithm 2's predicted f̂ per axis (spec §B.7 execution order);
   //! phi_cmd [rad]: s/c attitude command. u = [T_Csc; F_Csc; T_Ctm] clipped to ±limit.
-  //! ok; saturated (some component clipped); non_finite_input (u = last command, integrals kept).
+  //! ok; saturated (some component clipped); non_finite_input / out_of_range (u = the failure
+  //! command: zero, or the last command under on_failure = hold_last; integrals kept).
   [[nodiscard]] Status step(const Vec<27>& x_hat, const Vec3& F_D_hat, const Vec3& phi_cmd, Vec<9>& u) noexcept {
-    u = last_;
+    u = failure_command(p_.on_failure, last_, Vec<9>(Vec<9>::Zero()));
     if (status_ != Status::ok) return status_;
     if (!all_finite(x_hat) || !all_finite(F_D_hat) || !all_finite(phi_cmd)) return Status::non_finite_input;
     using Ix = DragFreeIndex;

@@ -9,6 +9,7 @@
 
 #include "adcs/adapt/ppc.hpp"
 #include "adcs/adapt/rbf_compensator.hpp"
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
@@ -68,6 +69,7 @@ struct EulerTrackingGains {
   RbfCompensatorParams<6, 7, 3> compensator = seed002_compensator();  //!< τ_w, τ_μ, β, γ, σ, RBF layer
   AngleUnits units = AngleUnits::radians;    //!< spec B.4 #18
   double control_period_s = 1.0e-4;          //!< [s] spec §B.5 (the paper's law is continuous)
+  FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
 };
 
 //! The paper's gains with its true inertia (seed 002 Tables 1-2): what both laws use on §B.5.
@@ -116,6 +118,10 @@ class EulerTrackingCore {
     last_ = EulerTrackingCommand{};
   }
   const EulerTrackingCommand& last() const noexcept { return last_; }
+  //! What a step outputs until it succeeds: zero torque, or the last good command (hold_last).
+  EulerTrackingCommand failure_command() const noexcept {
+    return adcs::failure_command(g_.on_failure, last_, EulerTrackingCommand{});
+  }
   RbfCompensator<6, 7, 3>& compensator() noexcept { return comp_; }
   const RbfCompensator<6, 7, 3>& compensator() const noexcept { return comp_; }
 

@@ -12,6 +12,7 @@
 
 #include "adcs/control/nonsingular_power.hpp"
 #include "adcs/control/se3_tracking_error.hpp"
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 
@@ -29,6 +30,7 @@ struct FtsmcSe3Params {
   double rho = 0.5;                 //!< [-] power of the reaching term
   double k_s = 0.0;                 //!< switching gain (0 in Table 2)
   double phi = 0.01;                //!< tanh boundary layer
+  FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed tick: zero wrench, or hold
 };
 
 class FtsmcSe3 {
@@ -50,12 +52,13 @@ class FtsmcSe3 {
   //! The sliding variable of the last good tick.
   const Vec6& sliding_variable() const noexcept { return s_; }
 
-  //! One control tick. On non-ok status u holds the last good command.
+  //! One control tick. On a status that is not usable u is the failure command (zero wrench, or the last good
+  //! command under on_failure = hold_last).
   [[nodiscard]] Status step(const Se3SpacecraftState& x, const Se3DesiredState& d, Vec6& u) noexcept {
     Se3TrackingError e;
     const Status se = se3_law_error(status_, x, d, nominal_, e);
     if (se != Status::ok) {
-      u = u_;
+      u = failure_command(p_.on_failure, u_, Vec6(Vec6::Zero()));
       return se;
     }
     const Vec6 s = e.eta_dot + p_.C1.cwiseProduct(e.eta) + p_.C2.cwiseProduct(S_.value(e.eta));
@@ -66,7 +69,7 @@ class FtsmcSe3 {
                     p_.C2.cwiseProduct(S_.derivative(e.eta)).cwiseProduct(e.eta_dot) - reach;
     const Vec6 u_new = se3_apply_inertia(nominal_.params(), e.G.inverse_times(nu));
     if (!all_finite(u_new)) {
-      u = u_;
+      u = failure_command(p_.on_failure, u_, Vec6(Vec6::Zero()));
       return Status::out_of_range;
     }
     u_ = u_new;

@@ -16,6 +16,7 @@
 #include "adcs/adapt/normalized_step.hpp"
 #include "adcs/adapt/projection.hpp"
 #include "adcs/core/failure_hook.hpp"
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/math/lyapunov.hpp"
@@ -47,6 +48,8 @@ struct HybridAdaptiveParams {
   Vec3 H_I_n = Vec3::Zero();               //!< [N m s] nominal inertial momentum H_I^n (§A.3)
   double control_period_s = 1.0e-3;        //!< [s] T_c (spec §A.5: ≥ 5 ms is unstable)
   SteeringParams steering{};               //!< singularity-robust fallback threshold/damping
+  //! After a failed step: zero gimbal rates and wheel accelerations (safe_command), or hold.
+  FailurePolicy on_failure = FailurePolicy::safe_command;
   //! Estimate integration over T_c. explicit_euler is the paper's (spec §A.3 step 13, stable for
   //! T_c ≤ 3 ms on A-REF); normalized keeps the per-step loop gain below max_step_gain so the
   //! adaptation stays stable at flight rates (5-20 Hz); see adapt/normalized_step.hpp.
@@ -139,11 +142,12 @@ class HybridAdaptive {
   //! One control sample. Returns ok; ill_conditioned (singularity-robust steering used, e.g. the
   //! available actuators cannot span all three axes);
   //! constraint_violated (the discrete safeguard rescaled an estimate; counted);
-  //! non_finite_input / singular / out_of_range / invalid_parameter with `out` = last good
-  //! command and every estimate untouched.
+  //! non_finite_input / singular / out_of_range / invalid_parameter / request_not_met (the
+  //! steering cannot deliver the torque) with `out` = the failure command (zero gimbal rates and
+  //! wheel accelerations, or the last good command under hold_last) and every estimate untouched.
   [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
                             Diagnostics* diag = nullptr) noexcept {
-    out = last_;
+    out = failure_command(p_.on_failure, last_, Command{});
     if (status_ != Status::ok) return status_;
     if (!all_finite(m.sigma_BN) || !all_finite(m.omega_BN_B) || !all_finite(m.gamma) ||
         !all_finite(m.Omega_w) || !all_finite(r.sigma) || !all_finite(r.sigma_dot) ||

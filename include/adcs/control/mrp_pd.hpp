@@ -6,6 +6,7 @@
 // (Schaub & Junkins, "Analytical Mechanics of Space Systems", eq. (8.106)-(8.110)); globally
 // asymptotically stable for K > 0, P > 0 with unsaturated torques. The output is the body torque
 // request L_r_B; RwTorqueAllocator maps it to wheel torques.
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/math/mrp.hpp"
@@ -19,6 +20,7 @@ struct MrpPdParams {
   Mat3 J_rw_B = Mat3::Identity();        //!< [kg m^2] J - sum J_s g g^T, B components
   Mat<3, N> G_s_B = Mat<3, N>::Zero();   //!< [-] wheel spin axes, B components
   Vec<N> J_s = Vec<N>::Zero();           //!< [kg m^2] wheel spin inertias
+  FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
 };
 
 template <int N>
@@ -53,12 +55,13 @@ class MrpPd {
   //! Clears the held command (the law has no other time-varying state).
   void reset() noexcept { last_ = Command{}; }
 
-  //! Computes L_r. On non-finite input returns non_finite_input and `out` receives the last
-  //! good command (zero after reset()); the output is always finite.
+  //! Computes L_r. On non-finite input returns non_finite_input, on an overflowing result
+  //! out_of_range; `out` then receives the failure command (core/failure_policy.hpp: zero
+  //! torque, or the last good command under hold_last). The output is always finite.
   [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out) noexcept {
     if (!all_finite(m.sigma_BN) || !all_finite(m.omega_BN_B) || !all_finite(m.Omega) ||
         !all_finite(r.sigma_RN) || !all_finite(r.omega_RN_N) || !all_finite(r.domega_RN_N)) {
-      out = last_;
+      out = failure_command(p_.on_failure, last_, Command{});
       return Status::non_finite_input;
     }
     const Mat3 C_BN = mrp_to_dcm(m.sigma_BN);
@@ -73,7 +76,7 @@ class MrpPd {
     c.L_r_B = -p_.K * c.sigma_BR - p_.P * c.omega_BR_B +
               p_.J_rw_B * (domega_RN_B - w.cross(omega_RN_B)) + w.cross(H_B);
     if (!all_finite(c.L_r_B)) {  // overflow from absurd (finite) inputs
-      out = last_;
+      out = failure_command(p_.on_failure, last_, Command{});
       return Status::out_of_range;
     }
     last_ = c;

@@ -4,6 +4,7 @@
 // difference quotient). Used as seed 004's linear baseline (Fig. 9: K_P 5.55, K_I 0, K_D 9).
 #include <cmath>
 
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 
@@ -15,6 +16,7 @@ struct PidParams {
   Vec<N> ki = Vec<N>::Zero();  //!< integral gains (per unit·s)
   Vec<N> kd = Vec<N>::Zero();  //!< derivative gains
   double period_s = 0.1;       //!< [s] h, the integration step of e_i
+  FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed sample: out = 0, or hold
 };
 
 template <int N>
@@ -26,19 +28,34 @@ class Pid {
     status_ = ok ? Status::ok : Status::invalid_parameter;
   }
   Status status() const noexcept { return status_; }
-  void reset() noexcept { e_i_.setZero(); }
+  void reset() noexcept {
+    e_i_.setZero();
+    last_.setZero();
+  }
   const Vec<N>& integral() const noexcept { return e_i_; }
 
   //! One sample. non_finite_input, or out_of_range (finite but absurd errors, ~1e308, whose
-  //! integral or output overflows), leave the integral untouched and `out` unchanged.
+  //! integral or output overflows), leave the integral untouched and set `out` to the failure
+  //! command (zero, or the last good output under on_failure = hold_last).
   [[nodiscard]] Status step(const Vec<N>& e_p, const Vec<N>& e_d, Vec<N>& out) noexcept {
-    if (status_ != Status::ok) return status_;
-    if (!all_finite(e_p) || !all_finite(e_d)) return Status::non_finite_input;
+    const Vec<N> fallback = failure_command(p_.on_failure, last_, Vec<N>(Vec<N>::Zero()));
+    if (status_ != Status::ok) {
+      out = fallback;
+      return status_;
+    }
+    if (!all_finite(e_p) || !all_finite(e_d)) {
+      out = fallback;
+      return Status::non_finite_input;
+    }
     const Vec<N> e_i = e_i_ + p_.period_s * e_p;
     const Vec<N> cmd = p_.kp.cwiseProduct(e_p) + p_.ki.cwiseProduct(e_i) + p_.kd.cwiseProduct(e_d);
     // Commit only finite results: an Inf integral would poison every later sample.
-    if (!all_finite(e_i) || !all_finite(cmd)) return Status::out_of_range;
+    if (!all_finite(e_i) || !all_finite(cmd)) {
+      out = fallback;
+      return Status::out_of_range;
+    }
     e_i_ = e_i;
+    last_ = cmd;
     out = cmd;
     return Status::ok;
   }
@@ -46,6 +63,7 @@ class Pid {
  private:
   PidParams<N> p_;
   Vec<N> e_i_ = Vec<N>::Zero();
+  Vec<N> last_ = Vec<N>::Zero();
   Status status_ = Status::ok;
 };
 

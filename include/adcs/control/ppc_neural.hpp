@@ -66,11 +66,12 @@ class PpcNeural {
   //! ok; constraint_violated (robust mode: an error at its funnel edge was clamped, flagged);
   //! out_of_range (funnel violated, or e(0) outside the funnel at the first step — the law is
   //! undefined there); non_finite_input; singular (|θ| at gimbal lock). Except for ok and
-  //! constraint_violated, `out` is the last good command and the estimates and funnel branches
+  //! constraint_violated, `out` is the failure command (zero torque, or the last good command under
+  //! gains.on_failure = hold_last) and the estimates and funnel branches
   //! are untouched (the branches are fixed by the first step that is applied).
   [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
                             Diagnostics* diag = nullptr) noexcept {
-    out = core_.last();
+    out = core_.failure_command();
     if (status_ != Status::ok) return status_;
     EulerTrackingCore::Kinematics k;
     const Status ks = core_.kinematics(m, r, k);

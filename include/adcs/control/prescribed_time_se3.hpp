@@ -21,6 +21,7 @@
 #include "adcs/actuator/quantizer.hpp"
 #include "adcs/control/nonsingular_power.hpp"
 #include "adcs/control/se3_tracking_error.hpp"
+#include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 
@@ -54,6 +55,7 @@ struct PrescribedTimeSe3Params {
   double sigma2 = 1e4;       //!< cubic leakage
   double psi_hat0 = 1e-4;    //!< ψ̂(0) (GIVEN by the paper)
   double h = 0.125;          //!< [s] control period (8 Hz, GIVEN)
+  FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed tick: zero wrench, or hold
 };
 
 //! One tick's intermediate quantities, for logging and tests.
@@ -91,12 +93,13 @@ class PrescribedTimeSe3 {
   const PrescribedTimeSe3Terms& terms() const noexcept { return terms_; }
 
   //! One control tick: u from the chaser state x and the desired state d, then ψ̂ ← ψ̂ + h ψ̂̇.
-  //! On non-ok status u holds the last good command and ψ̂ is unchanged.
+  //! On a status that is not usable u is the failure command (zero wrench, or the last good
+  //! command under on_failure = hold_last) and ψ̂ is unchanged.
   [[nodiscard]] Status step(const Se3SpacecraftState& x, const Se3DesiredState& d, Vec6& u) noexcept {
     Se3TrackingError e;
     const Status se = se3_law_error(status_, x, d, nominal_, e);
     if (se != Status::ok) {
-      u = u_;
+      u = failure_command(p_.on_failure, u_, Vec6(Vec6::Zero()));
       return se;
     }
     const double c = kPi / (p_.p * p_.T);
@@ -127,7 +130,7 @@ class PrescribedTimeSe3 {
                            p_.sigma2 * psi_hat_ * psi_hat_ * psi_hat_;
     const double psi_new = std::fmax(0.0, psi_hat_ + p_.h * psi_dot);
     if (!all_finite(u_new) || !std::isfinite(psi_new)) {
-      u = u_;
+      u = failure_command(p_.on_failure, u_, Vec6(Vec6::Zero()));
       return Status::out_of_range;
     }
     u_ = u_new;
