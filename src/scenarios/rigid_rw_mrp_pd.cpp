@@ -62,6 +62,8 @@ class RigidRwMrpPd final : public Scenario {
     cp.G_s_B = pp.G_s_B;
     cp.J_s = pp.J_s;
     MrpPd<kRigidRwWheels> controller(cp);
+    if (controller.status() != Status::ok)
+      throw ParamError("MRP PD parameters rejected (K_Nm > 0, P_Nms > 0, SPD inertia, unit wheel axes)");
     RwAllocationParams<kRigidRwWheels> ap;
     ap.G_s_B = pp.G_s_B;
     ap.torque_limit = p.get_number("torque_limit_Nm");

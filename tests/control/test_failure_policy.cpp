@@ -35,6 +35,10 @@ TEST(FailurePolicy, MrpPdZeroTorqueOrHold) {
     p.K = 1.44;
     p.P = 30.0 * adcs::Mat3::Identity();
     p.J_rw_B = Vec3(0.2, 0.25, 0.15).asDiagonal();
+    p.G_s_B = adcs::Mat<3, 4>::Zero();
+    p.G_s_B.leftCols<3>().setIdentity();
+    p.G_s_B.col(3) = Vec3::Ones().normalized();
+    p.J_s.setConstant(1e-4);
     p.on_failure = policy;
     adcs::MrpPd<4> ctrl(p);
     adcs::MrpPd<4>::Measurement m;

@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <limits>
+#include <vector>
 
 #include "adcs/control/mrp_pd.hpp"
 
@@ -111,4 +112,29 @@ TEST(MrpPd, DeterministicBitForBit) {
   ASSERT_EQ(b.step(m, r, ob), adcs::Status::ok);
   EXPECT_EQ(std::memcmp(oa.L_r_B.data(), ob.L_r_B.data(), sizeof(double) * 3), 0);
 }
+// Issue 15: no made-up defaults. A forgotten field is NaN and refused; so is anything unphysical.
+TEST(MrpPd, RefusesMissingOrUnphysicalParameters) {
+  EXPECT_EQ(Ctrl(Ctrl::Params{}).status(), adcs::Status::invalid_parameter);  // nothing set
+  EXPECT_EQ(Ctrl(params()).status(), adcs::Status::ok);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Ctrl::Params> bad(9, params());
+  bad[0].K = 0.0;
+  bad[1].K = nan;
+  bad[2].P(0, 1) = 5.0;                 // not symmetric
+  bad[3].P = -bad[3].P;                 // not positive definite
+  bad[4].J_rw_B(2, 2) = 0.0;            // singular inertia
+  bad[5].J_rw_B(1, 1) = std::numeric_limits<double>::infinity();
+  bad[6].G_s_B.col(2) *= 2.0;           // not a unit axis
+  bad[7].J_s(1) = -0.1;
+  bad[8].G_s_B(0, 0) = nan;
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    Ctrl c(bad[i]);
+    EXPECT_EQ(c.status(), adcs::Status::invalid_parameter) << i;
+    adcs::MrpPdCommand out;
+    out.L_r_B.setConstant(7.0);
+    EXPECT_EQ(c.step(Ctrl::Measurement{}, adcs::AttitudeReference{}, out), adcs::Status::invalid_parameter) << i;
+    EXPECT_EQ(out.L_r_B, adcs::Vec3::Zero()) << i;  // the safe command, never a made-up torque
+  }
+}
+
 }  // namespace

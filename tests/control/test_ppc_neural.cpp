@@ -286,4 +286,13 @@ TEST(AdaptiveTracking, OracleClosedLoopIsMinusKsAndBadInputIsHeld) {
   EXPECT_TRUE(adcs::all_finite(out.torque_B));
   EXPECT_EQ(loop.law.weights().col(0), before);
 }
+// Issue 15: the inertia has no default (it used to be the identity): a forgotten J is refused.
+TEST(PpcNeural, RefusesAForgottenInertia) {
+  adcs::PpcNeuralParams p;  // gains.J not set
+  EXPECT_EQ(adcs::PpcNeural(p).status(), Status::invalid_parameter);
+  EXPECT_EQ(adcs::AdaptiveTracking(adcs::AdaptiveTrackingParams{}).status(), Status::invalid_parameter);
+  p.gains = adcs::seed002_tracking_gains();
+  EXPECT_EQ(adcs::PpcNeural(p).status(), Status::ok);
+}
+
 }  // namespace

@@ -6,6 +6,7 @@
 //   - the neural compensation and adaptation with the final u = B⁻¹(…) (steps 11-14).
 // Each law supplies its sliding variable s and its model part of the bracket.
 #include <cmath>
+#include <limits>
 
 #include "adcs/adapt/ppc.hpp"
 #include "adcs/adapt/rbf_compensator.hpp"
@@ -63,7 +64,9 @@ inline RbfCompensatorParams<6, 7, 3> seed002_compensator() noexcept {
 
 //! Gains shared by both laws (seed 002 Table 2 defaults).
 struct EulerTrackingGains {
-  Mat3 J = Mat3::Identity();                 //!< [kg m²] inertia in B⁻¹ = J G and A (the paper uses the true J)
+  //! [kg m²] inertia in B⁻¹ = J G and A (the paper uses the true J). No default: NaN until set,
+  //! so a forgotten inertia is refused (status() == invalid_parameter), never taken as I.
+  Mat3 J = Mat3::Constant(std::numeric_limits<double>::quiet_NaN());
   Vec3 lambda = Vec3::Constant(0.125);       //!< [1/s] λ, seed 002 Table 2
   Vec3 K = Vec3(0.5, 0.1, 0.5);              //!< [law units] K, seed 002 Table 2
   RbfCompensatorParams<6, 7, 3> compensator = seed002_compensator();  //!< τ_w, τ_μ, β, γ, σ, RBF layer

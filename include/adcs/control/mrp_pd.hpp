@@ -6,6 +6,10 @@
 // (Schaub & Junkins, "Analytical Mechanics of Space Systems", eq. (8.106)-(8.110)); globally
 // asymptotically stable for K > 0, P > 0 with unsaturated torques. The output is the body torque
 // request L_r_B; RwTorqueAllocator maps it to wheel torques.
+#include <limits>
+
+#include <Eigen/Cholesky>
+
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
@@ -13,13 +17,15 @@
 
 namespace adcs {
 
+//! No field has a default: a forgotten gain, inertia or wheel axis is NaN and the controller
+//! refuses the set (status() == invalid_parameter) instead of running with made-up values.
 template <int N>
 struct MrpPdParams {
-  double K = 1.0;                        //!< [N m] attitude gain on sigma_BR
-  Mat3 P = Mat3::Identity();             //!< [N m s] rate gain on omega_BR_B
-  Mat3 J_rw_B = Mat3::Identity();        //!< [kg m^2] J - sum J_s g g^T, B components
-  Mat<3, N> G_s_B = Mat<3, N>::Zero();   //!< [-] wheel spin axes, B components
-  Vec<N> J_s = Vec<N>::Zero();           //!< [kg m^2] wheel spin inertias
+  double K = std::numeric_limits<double>::quiet_NaN();                        //!< [N m] attitude gain on sigma_BR, > 0
+  Mat3 P = Mat3::Constant(std::numeric_limits<double>::quiet_NaN());          //!< [N m s] rate gain on omega_BR_B, SPD
+  Mat3 J_rw_B = Mat3::Constant(std::numeric_limits<double>::quiet_NaN());     //!< [kg m^2] J - sum J_s g g^T, B components, SPD
+  Mat<3, N> G_s_B = Mat<3, N>::Constant(std::numeric_limits<double>::quiet_NaN());  //!< [-] wheel spin axes (unit), B components
+  Vec<N> J_s = Vec<N>::Constant(std::numeric_limits<double>::quiet_NaN());    //!< [kg m^2] wheel spin inertias, >= 0
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
 };
 
@@ -50,7 +56,24 @@ class MrpPd {
   using Reference = AttitudeReference;
   using Command = MrpPdCommand;
 
-  explicit MrpPd(const Params& p) noexcept : p_(p) { reset(); }
+  explicit MrpPd(const Params& p) noexcept : p_(p), status_(validate(p)) { reset(); }
+
+  //! ok, or invalid_parameter when a parameter is missing (NaN), not finite or unphysical: K > 0;
+  //! P and J_rw_B symmetric positive definite; G_s_B unit columns; J_s >= 0. A refused controller
+  //! answers invalid_parameter from every step() with its failure command.
+  Status status() const noexcept { return status_; }
+  const Params& params() const noexcept { return p_; }
+
+  static Status validate(const Params& p) noexcept {
+    auto spd = [](const Mat3& A) {
+      return all_finite(A) && (A - A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * A.cwiseAbs().maxCoeff() &&
+             Eigen::LLT<Mat3>(A).info() == Eigen::Success;
+    };
+    const bool ok = std::isfinite(p.K) && p.K > 0.0 && spd(p.P) && spd(p.J_rw_B) && all_finite(p.G_s_B) &&
+                    ((p.G_s_B.colwise().norm().array() - 1.0).abs() <= 1e-6).all() && all_finite(p.J_s) &&
+                    (p.J_s.array() >= 0.0).all();
+    return ok ? Status::ok : Status::invalid_parameter;
+  }
 
   //! Clears the held command (the law has no other time-varying state).
   void reset() noexcept { last_ = Command{}; }
@@ -59,6 +82,10 @@ class MrpPd {
   //! out_of_range; `out` then receives the failure command (core/failure_policy.hpp: zero
   //! torque, or the last good command under hold_last). The output is always finite.
   [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out) noexcept {
+    if (status_ != Status::ok) {
+      out = failure_command(p_.on_failure, last_, Command{});
+      return status_;
+    }
     if (!all_finite(m.sigma_BN) || !all_finite(m.omega_BN_B) || !all_finite(m.Omega) ||
         !all_finite(r.sigma_RN) || !all_finite(r.omega_RN_N) || !all_finite(r.domega_RN_N)) {
       out = failure_command(p_.on_failure, last_, Command{});
@@ -86,6 +113,7 @@ class MrpPd {
 
  private:
   Params p_;
+  Status status_;
   Command last_;
 };
 
