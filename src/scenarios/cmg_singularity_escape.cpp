@@ -184,7 +184,7 @@ class CmgSingularityEscape final : public Scenario {
     s.escape.omega_rad_s = p.get_number("omega_rad_s");
     s.escape.max_torque_error = p.get_number("max_torque_error");
     if (!valid(s.damped) || !valid(s.escape))
-      throw ParamError("cmg-singularity-escape: steering parameters out of range (lambda0 > 0, mu >= 0, "
+      throw ParamError("cmg-singularity-escape: steering parameters out of range (lambda0 >= 1e-8, mu >= 0, "
                        "0 <= epsilon0 < 0.5, omega_rad_s >= 0, 0 < max_torque_error <= 1)");
 
     std::array<LawRun, kLaws> internal, saturation;

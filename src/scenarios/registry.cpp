@@ -28,6 +28,7 @@ std::unique_ptr<Scenario> make_se3_ptc();
 std::unique_ptr<Scenario> make_se3_ftsmc();
 std::unique_ptr<Scenario> make_se3_campaign();
 std::unique_ptr<Scenario> make_cmg_singularity_escape();
+std::unique_ptr<Scenario> make_cubesat_mrp_pd();
 
 namespace {
 
@@ -54,6 +55,7 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_se3_ftsmc());
   v.push_back(make_se3_campaign());
   v.push_back(make_cmg_singularity_escape());
+  v.push_back(make_cubesat_mrp_pd());
   return v;
 }
 

@@ -13,9 +13,13 @@ void declare_rigid_rw(ParamSet& p, const RigidRwDefaults& d) {
   p.matrix("J_kgm2", d.J_kgm2, "kg m^2",
            "total inertia incl. wheels, B components; " + d.source);
   const double s = 1.0 / std::sqrt(3.0);
-  p.matrix("wheel_axes_B", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {s, s, s}}, "-",
-           "one row per wheel spin axis, B components (normalised on use); 3 orthogonal + 1 "
-           "skewed, as in the issue");
+  if (d.wheel_axes_B.empty())
+    p.matrix("wheel_axes_B", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {s, s, s}}, "-",
+             "one row per wheel spin axis, B components (normalised on use); 3 orthogonal + 1 "
+             "skewed, as in the issue");
+  else
+    p.matrix("wheel_axes_B", d.wheel_axes_B, "-",
+             "one row per wheel spin axis, B components (normalised on use); " + d.wheel_axes_source);
   p.vector("wheel_Js_kgm2", d.wheel_Js_kgm2, "kg m^2", "wheel spin-axis inertia; " + d.source);
   p.vector("sigma0_BN", d.sigma0_BN, "-", "initial MRP; " + d.source);
   p.vector("omega0_BN_B", d.omega0_BN_B, "rad/s", "initial body rate; " + d.source);

@@ -24,6 +24,9 @@ struct RigidRwDefaults {
   std::vector<double> sigma0_BN, omega0_BN_B, Omega0_rad_s;
   double duration_s = 0.0, control_period_s = 0.0;
   std::string source;  //!< why these defaults
+  //! One row per wheel spin axis; empty: 3 orthogonal + 1 skewed (the foundation issue's set).
+  std::vector<std::vector<double>> wheel_axes_B = {};
+  std::string wheel_axes_source = {};
 };
 
 //! Declares duration_s, control_period_s, J_kgm2, wheel_axes_B, wheel_Js_kgm2, sigma0_BN,

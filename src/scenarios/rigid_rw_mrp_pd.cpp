@@ -1,4 +1,4 @@
-// rigid-rw-mrp-pd: inertial-pointing slew of a rigid spacecraft with 4 reaction wheels
+// rigid-rw-mrp-pd and cubesat-mrp-pd: inertial-pointing slew of a rigid spacecraft with 4 reaction wheels
 // (3 orthogonal + 1 skewed) under the MRP PD law (control/mrp_pd.hpp) at 10 Hz, minimum-norm
 // pseudo-inverse torque allocation with a per-wheel limit (actuator/rw_allocation.hpp). Our
 // baseline against Basilisk's mrpFeedback (K_i = 0) + rwMotorTorque. No external torque, so
@@ -10,6 +10,7 @@
 
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/control/mrp_pd.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
 #include "scenarios/rigid_rw_common.hpp"
 #include "sim/metrics.hpp"
 #include "sim/sampled_data.hpp"
@@ -17,38 +18,100 @@
 namespace adcs::sim {
 namespace {
 
-// Every parameter below is ours (the foundation issue fixes only J, the 10 Hz rate and the
-// 0.2 N m limit): chosen so the saturated slew converges without large overshoot.
+// rigid-rw-mrp-pd: every parameter below is ours (the foundation issue fixes only J, the 10 Hz
+// rate and the 0.2 N m limit): chosen so the saturated slew converges without large overshoot.
 constexpr const char* kSource = "assumed: foundation baseline, not from a paper";
 constexpr const char* kIssue = "issue 2 (foundation): inertia diag(900,800,600), 10 Hz, 0.2 N m";
+// cubesat-mrp-pd: the 12U cubesat of issue 15, gains chosen as a user would (see declare()).
+constexpr const char* kCubesat = "issue 15: 12U cubesat, J diag(0.20, 0.25, 0.15), 4 wheels at 30 deg, 3 mN m";
+constexpr const char* kCubesatOurs = "ours: chosen for the 12U cubesat (issue 15), see the scenario file";
+
+//! Which vehicle the MRP PD scenario flies.
+struct MrpPdVehicle {
+  std::string name, description;
+  RigidRwDefaults defaults;
+  std::vector<double> sigma_RN;
+  double K_Nm;
+  std::vector<double> P_Nms;
+  double torque_limit_Nm, settle_band_rad;
+  std::string gain_source, limit_source;
+};
+
+MrpPdVehicle foundation_vehicle() {
+  MrpPdVehicle v;
+  v.name = "rigid-rw-mrp-pd";
+  v.description = "MRP PD slew to an inertial target, 4 reaction wheels (3 orthogonal + 1 skewed), "
+                  "min-norm allocation with 0.2 N m limit, 10 Hz";
+  RigidRwDefaults& d = v.defaults;
+  d.J_kgm2 = {{900.0, 0.0, 0.0}, {0.0, 800.0, 0.0}, {0.0, 0.0, 600.0}};
+  d.wheel_Js_kgm2 = {0.05, 0.05, 0.05, 0.05};
+  d.sigma0_BN = {0.0, 0.0, 0.0};
+  d.omega0_BN_B = {0.0, 0.0, 0.0};
+  d.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
+  d.duration_s = 1200.0;
+  d.control_period_s = 0.1;
+  d.source = kSource;
+  v.sigma_RN = {0.1, 0.2, -0.3};  // 82.6 deg slew
+  // Critically damped linearised axes (sigma ~ phi/4): K = 4 J_i w_n^2, P_i = 2 J_i w_n,
+  // w_n = 0.02 rad/s on x; the low K/P ratio keeps the saturated cruise rate small enough to
+  // stop within the 0.2 N m budget.
+  v.K_Nm = 1.44;
+  v.P_Nms = {36.0, 32.0, 28.0};
+  v.torque_limit_Nm = 0.2;
+  v.settle_band_rad = 1e-3;
+  v.gain_source = kSource;
+  v.limit_source = kIssue;
+  return v;
+}
+
+//! The 12U cubesat of issue 15: a 30 deg rest-to-rest slew about (1, 2, 3)/sqrt(14), then a
+//! 300 s hold, at 10 Hz on four 3 mN m wheels in a 30 deg pyramid.
+MrpPdVehicle cubesat_vehicle() {
+  MrpPdVehicle v;
+  v.name = "cubesat-mrp-pd";
+  v.description = "12U cubesat (issue 15): 30 deg rest-to-rest slew about (1,2,3)/sqrt(14) and a 300 s hold, "
+                  "MRP PD at 10 Hz, 4 wheels in a 30 deg pyramid, 3 mN m each";
+  RigidRwDefaults& d = v.defaults;
+  d.J_kgm2 = {{0.20, 0.0, 0.0}, {0.0, 0.25, 0.0}, {0.0, 0.0, 0.15}};
+  d.wheel_Js_kgm2 = {2e-5, 2e-5, 2e-5, 2e-5};  // ours: a small cubesat wheel (~2e-5 kg m^2)
+  d.sigma0_BN = {0.0, 0.0, 0.0};
+  d.omega0_BN_B = {0.0, 0.0, 0.0};
+  d.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
+  d.duration_s = 420.0;  // slew (~100 s) + the 300 s hold
+  d.control_period_s = 0.1;
+  d.source = kCubesat;
+  Mat<3, 4> A;
+  (void)wheel_pyramid_axes<4>(30.0 * kPiRad / 180.0, A);  // 30 deg is in range: cannot fail
+  for (int j = 0; j < 4; ++j) d.wheel_axes_B.push_back({A(0, j), A(1, j), A(2, j)});
+  d.wheel_axes_source = "issue 15: four wheels in a pyramid at 30 deg elevation (azimuths 0, 90, 180, 270 deg)";
+  // 30 deg about e = (1, 2, 3)/sqrt(14): sigma = tan(30 deg / 4) e.
+  const double t4 = std::tan(30.0 * kPiRad / 180.0 / 4.0), n = std::sqrt(14.0);
+  v.sigma_RN = {t4 / n, 2.0 * t4 / n, 3.0 * t4 / n};
+  // Gains as a user would choose them: critically damped axes (sigma ~ phi/4, so
+  // K = 4 J_i w_n^2, P_i = 2 J_i w_n) with w_n = 0.1 rad/s on the largest inertia; the 30 deg
+  // step then asks K sigma ~ 0.7 mN m, within one wheel's 3 mN m, so the slew is unsaturated.
+  v.K_Nm = 4.0 * 0.25 * 0.1 * 0.1;
+  v.P_Nms = {2.0 * 0.20 * 0.1, 2.0 * 0.25 * 0.1, 2.0 * 0.15 * 0.1};
+  v.torque_limit_Nm = 3e-3;
+  v.settle_band_rad = 1e-3;
+  v.gain_source = kCubesatOurs;
+  v.limit_source = kCubesat;
+  return v;
+}
 
 class RigidRwMrpPd final : public Scenario {
  public:
-  std::string name() const override { return "rigid-rw-mrp-pd"; }
-  std::string description() const override {
-    return "MRP PD slew to an inertial target, 4 reaction wheels (3 orthogonal + 1 skewed), "
-           "min-norm allocation with 0.2 N m limit, 10 Hz";
-  }
+  explicit RigidRwMrpPd(MrpPdVehicle v) : v_(std::move(v)) {}
+  std::string name() const override { return v_.name; }
+  std::string description() const override { return v_.description; }
 
   void declare(ParamSet& p) const override {
-    RigidRwDefaults d;
-    d.J_kgm2 = {{900.0, 0.0, 0.0}, {0.0, 800.0, 0.0}, {0.0, 0.0, 600.0}};
-    d.wheel_Js_kgm2 = {0.05, 0.05, 0.05, 0.05};
-    d.sigma0_BN = {0.0, 0.0, 0.0};
-    d.omega0_BN_B = {0.0, 0.0, 0.0};
-    d.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
-    d.duration_s = 1200.0;
-    d.control_period_s = 0.1;
-    d.source = kSource;
-    declare_rigid_rw(p, d);
-    p.vector("sigma_RN", {0.1, 0.2, -0.3}, "-", "inertial target MRP (82.6 deg slew); " + std::string(kSource));
-    // Critically damped linearised axes (sigma ~ phi/4): K = 4 J_i w_n^2, P_i = 2 J_i w_n,
-    // w_n = 0.02 rad/s on x; the low K/P ratio keeps the saturated cruise rate small enough to
-    // stop within the 0.2 N m budget.
-    p.number("K_Nm", 1.44, "N m", kSource);
-    p.vector("P_Nms", {36.0, 32.0, 28.0}, "N m s", "diagonal rate gain; " + std::string(kSource));
-    p.number("torque_limit_Nm", 0.2, "N m", kIssue);
-    p.number("settle_band_rad", 1e-3, "rad", "principal-angle band for settle_s; " + std::string(kSource));
+    declare_rigid_rw(p, v_.defaults);
+    p.vector("sigma_RN", v_.sigma_RN, "-", "inertial target MRP; " + v_.gain_source);
+    p.number("K_Nm", v_.K_Nm, "N m", v_.gain_source);
+    p.vector("P_Nms", v_.P_Nms, "N m s", "diagonal rate gain; " + v_.gain_source);
+    p.number("torque_limit_Nm", v_.torque_limit_Nm, "N m", v_.limit_source);
+    p.number("settle_band_rad", v_.settle_band_rad, "rad", "principal-angle band for settle_s; " + v_.gain_source);
   }
 
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
@@ -130,6 +193,8 @@ class RigidRwMrpPd final : public Scenario {
     if (csv) csv->close();
 
     const double att_err_final = err_series.empty() ? NAN : err_series.back();
+    const double att_err_max = err_series.empty() ? NAN : *std::max_element(err_series.begin(), err_series.end());
+    constexpr double kRad2Deg = 180.0 / kPiRad;
     const double settle = metrics::settling_time(t_series, err_series, p.get_number("settle_band_rad"));
     const double limit = p.get_number("torque_limit_Nm");
     const double H_scale = std::max(H0.norm(), pp.J_B.norm() * 1e-3);  // H0 may be 0 (rest)
@@ -142,7 +207,9 @@ class RigidRwMrpPd final : public Scenario {
                  {"saturated_fraction", samples ? double(saturated) / double(samples) : 0.0},
                  {"rejected_steps", double(rejected)},
                  {"momentum_drift_Nms", dH_max},
-                 {"momentum_drift_rel", dH_max / H_scale}};
+                 {"momentum_drift_rel", dH_max / H_scale},
+                 {"att_err_max_deg", kRad2Deg * att_err_max},
+                 {"att_err_final_deg", kRad2Deg * att_err_final}};
     char buf[96];
     std::snprintf(buf, sizeof buf, "%.3g rad after %.0f s", att_err_final, t_end);
     r.claims.push_back({"check", "MRP PD slew converges to the inertial target", "< 1e-3 rad", buf,
@@ -161,17 +228,21 @@ class RigidRwMrpPd final : public Scenario {
          "sigma_BN [-]", false},
         {name() + "-omega.png", "Body rate omega_BN_B", "t",
          {"omega_BN_B_1", "omega_BN_B_2", "omega_BN_B_3"}, "omega_BN_B [rad/s]", false},
-        {name() + "-torque.png", "Wheel motor torques (limit 0.2 N m)", "t",
+        {name() + "-torque.png", "Wheel motor torques (limit " + format_number(limit) + " N m)", "t",
          {"u_s_1", "u_s_2", "u_s_3", "u_s_4"}, "u_s [N m]", false},
         {name() + "-wheels.png", "Wheel speeds", "t", {"Omega_1", "Omega_2", "Omega_3", "Omega_4"},
          "Omega [rad/s]", false},
     };
     return r;
   }
+
+ private:
+  MrpPdVehicle v_;
 };
 
 }  // namespace
 
-std::unique_ptr<Scenario> make_rigid_rw_mrp_pd() { return std::make_unique<RigidRwMrpPd>(); }
+std::unique_ptr<Scenario> make_rigid_rw_mrp_pd() { return std::make_unique<RigidRwMrpPd>(foundation_vehicle()); }
+std::unique_ptr<Scenario> make_cubesat_mrp_pd() { return std::make_unique<RigidRwMrpPd>(cubesat_vehicle()); }
 
 }  // namespace adcs::sim

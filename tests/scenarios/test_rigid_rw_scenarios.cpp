@@ -107,4 +107,21 @@ TEST(RigidRwScenarios, RejectUnphysicalParameters) {
   q.set("J_kgm2", "[[900, 1, 0], [0, 800, 0], [0, 0, 600]]");
   EXPECT_THROW(s->run(q, RunContext{}), adcs::sim::ParamError);
 }
+
+// cubesat-mrp-pd (issue 15): the 12U cubesat's 30 deg rest-to-rest slew and 300 s hold on four
+// 3 mN m wheels at 10 Hz: settles, no overshoot beyond the initial error, torque within the limit.
+TEST(CubesatMrpPd, SlewsSettlesAndHoldsWithinTheWheelLimit) {
+  const RunResult r = run("cubesat-mrp-pd");
+  EXPECT_NEAR(metric(r, "att_err_max_deg"), 30.0, 1e-6);  // the initial error is the largest
+  EXPECT_LT(metric(r, "att_err_final_deg"), 0.01);
+  EXPECT_LT(metric(r, "settle_s"), 120.0);  // then the 300 s hold inside 1e-3 rad
+  EXPECT_LE(metric(r, "torque_max_Nm"), 3e-3 * (1.0 + 1e-12));
+  EXPECT_EQ(metric(r, "rejected_steps"), 0.0);
+  for (const auto& c : r.claims) EXPECT_TRUE(c.holds.value_or(false)) << c.claim;
+  // Another inertia and a slower controller, as a user would try them.
+  const RunResult other = run("cubesat-mrp-pd", {{"J_kgm2", "[[0.22, 0, 0], [0, 0.27, 0], [0, 0, 0.16]]"},
+                                                 {"control_period_s", "0.2"}});
+  EXPECT_LT(metric(other, "att_err_final_deg"), 0.05);
+  EXPECT_LE(metric(other, "torque_max_Nm"), 3e-3 * (1.0 + 1e-12));
+}
 }  // namespace

@@ -38,6 +38,12 @@ struct SteeringInfo {
   double regularization = 0.0;       //!< [-] λ of steer_escape (on X̄ X̄ᵀ); pinv.damping for steer()
 };
 
+//! Smallest λ0 steer_escape accepts (on X̄X̄ᵀ, whose eigenvalues are O(1)). At a singular X̄,
+//! λ = λ0 is all that keeps X̄X̄ᵀ + λE invertible; with λ0 ≥ 1e-8 and ε0 < 0.5 its smallest
+//! eigenvalue stays far above rounding (eps ‖X̄X̄ᵀ‖ ~ 1e-15), so the Cholesky solve returns the
+//! bounded command and not rounding noise.
+inline constexpr double kEscapeLambda0Min = 1e-8;
+
 //! Torque error up to which a regularised command is reported ok rather than ill_conditioned by
 //! steer_escape (its λ never vanishes, so it is never exact): 0.1 % of the request.
 inline constexpr double kSteeringOkTorqueError = 1e-3;
@@ -135,7 +141,7 @@ template <int L>
 //! ~λ0 e^(−μ m²) (≈ 1e-6 for a healthy four-CMG pyramid) and u is the pseudo-inverse's to that
 //! order. Thresholds are relative: X̄ has unit-scale columns whatever the rotor momentum.
 struct EscapeSteeringParams {
-  double lambda0 = 0.01;                          //!< [-] λ at a singularity (Wie 2005: 0.01), > 0
+  double lambda0 = 0.01;                          //!< [-] λ at a singularity (Wie 2005: 0.01), ≥ kEscapeLambda0Min
   double mu = 10.0;                               //!< [-] decay of λ with det(X̄X̄ᵀ) (Wie 2005: 10), ≥ 0
   double epsilon0 = 0.01;                         //!< [-] dither amplitude (Wie 2005: 0.01), in [0, 0.5)
   double omega_rad_s = 0.5 * kPiRad;              //!< [rad/s] dither frequency (Wie 2005: π/2), ≥ 0
@@ -143,10 +149,13 @@ struct EscapeSteeringParams {
   double max_torque_error = 0.1;                  //!< [-] bound on ‖Xu − v‖/‖v‖ of a usable command, in (0, 1]
 };
 
-//! Finite and in range; epsilon0 < 0.5 keeps E diagonally dominant, so X̄X̄ᵀ + λE is positive
-//! definite for every X (λ > 0) and u is bounded: ‖u‖ ≤ ‖v‖ / (2 s √(λ (1 − 2ε0))).
+//! Finite and in range; epsilon0 < 0.5 keeps E diagonally dominant (E ⪰ (1 − 2ε0) I), so
+//! M = X̄X̄ᵀ + λE is positive definite for every X (λ > 0) and u is bounded:
+//! ‖u‖² = v̄ᵀM⁻¹X̄X̄ᵀM⁻¹v̄ ≤ v̄ᵀM⁻¹v̄ ≤ ‖v̄‖² / (λ (1 − 2ε0)), v̄ = v / s, i.e.
+//! ‖u‖ ≤ ‖v‖ / (s √(λ (1 − 2ε0))). (Without the dither, E = I, the tighter ‖v‖ / (2 s √λ)
+//! holds; with it, E and X̄X̄ᵀ need not commute: found by fuzz_seed001.)
 inline bool valid(const EscapeSteeringParams& p) noexcept {
-  return p.lambda0 > 0.0 && std::isfinite(p.lambda0) && p.mu >= 0.0 && std::isfinite(p.mu) &&
+  return p.lambda0 >= kEscapeLambda0Min && std::isfinite(p.lambda0) && p.mu >= 0.0 && std::isfinite(p.mu) &&
          p.epsilon0 >= 0.0 && p.epsilon0 < 0.5 && p.omega_rad_s >= 0.0 && std::isfinite(p.omega_rad_s) &&
          all_finite(p.phase_rad) && p.max_torque_error > 0.0 && p.max_torque_error <= 1.0;
 }
