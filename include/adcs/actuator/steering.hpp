@@ -153,7 +153,7 @@ struct EscapeSteeringParams {
 //! M = X̄X̄ᵀ + λE is positive definite for every X (λ > 0) and u is bounded:
 //! ‖u‖² = v̄ᵀM⁻¹X̄X̄ᵀM⁻¹v̄ ≤ v̄ᵀM⁻¹v̄ ≤ ‖v̄‖² / (λ (1 − 2ε0)), v̄ = v / s, i.e.
 //! ‖u‖ ≤ ‖v‖ / (s √(λ (1 − 2ε0))). (Without the dither, E = I, the tighter ‖v‖ / (2 s √λ)
-//! holds; with it, E and X̄X̄ᵀ need not commute: found by fuzz_seed001.)
+//! holds; with it, E and X̄X̄ᵀ need not commute.)
 inline bool valid(const EscapeSteeringParams& p) noexcept {
   return p.lambda0 >= kEscapeLambda0Min && std::isfinite(p.lambda0) && p.mu >= 0.0 && std::isfinite(p.mu) &&
          p.epsilon0 >= 0.0 && p.epsilon0 < 0.5 && p.omega_rad_s >= 0.0 && std::isfinite(p.omega_rad_s) &&
