@@ -37,17 +37,23 @@ struct MrpPdVehicle {
   std::string gain_source, limit_source;
 };
 
-MrpPdVehicle foundation_vehicle() {
+//! Both vehicles start at rest, wheels stopped, at sigma_BN = 0 (the target is sigma_RN).
+MrpPdVehicle at_rest_vehicle() {
   MrpPdVehicle v;
+  v.defaults.sigma0_BN = {0.0, 0.0, 0.0};
+  v.defaults.omega0_BN_B = {0.0, 0.0, 0.0};
+  v.defaults.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
+  return v;
+}
+
+MrpPdVehicle foundation_vehicle() {
+  MrpPdVehicle v = at_rest_vehicle();
   v.name = "rigid-rw-mrp-pd";
   v.description = "MRP PD slew to an inertial target, 4 reaction wheels (3 orthogonal + 1 skewed), "
                   "min-norm allocation with 0.2 N m limit, 10 Hz";
   RigidRwDefaults& d = v.defaults;
   d.J_kgm2 = {{900.0, 0.0, 0.0}, {0.0, 800.0, 0.0}, {0.0, 0.0, 600.0}};
   d.wheel_Js_kgm2 = {0.05, 0.05, 0.05, 0.05};
-  d.sigma0_BN = {0.0, 0.0, 0.0};
-  d.omega0_BN_B = {0.0, 0.0, 0.0};
-  d.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
   d.duration_s = 1200.0;
   d.control_period_s = 0.1;
   d.source = kSource;
@@ -67,16 +73,13 @@ MrpPdVehicle foundation_vehicle() {
 //! The 12U cubesat of issue 15: a 30 deg rest-to-rest slew about (1, 2, 3)/sqrt(14), then a
 //! 300 s hold, at 10 Hz on four 3 mN m wheels in a 30 deg pyramid.
 MrpPdVehicle cubesat_vehicle() {
-  MrpPdVehicle v;
+  MrpPdVehicle v = at_rest_vehicle();
   v.name = "cubesat-mrp-pd";
   v.description = "12U cubesat (issue 15): 30 deg rest-to-rest slew about (1,2,3)/sqrt(14) and a 300 s hold, "
                   "MRP PD at 10 Hz, 4 wheels in a 30 deg pyramid, 3 mN m each";
   RigidRwDefaults& d = v.defaults;
   d.J_kgm2 = {{0.20, 0.0, 0.0}, {0.0, 0.25, 0.0}, {0.0, 0.0, 0.15}};
   d.wheel_Js_kgm2 = {2e-5, 2e-5, 2e-5, 2e-5};  // ours: a small cubesat wheel (~2e-5 kg m^2)
-  d.sigma0_BN = {0.0, 0.0, 0.0};
-  d.omega0_BN_B = {0.0, 0.0, 0.0};
-  d.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
   d.duration_s = 420.0;  // slew (~100 s) + the 300 s hold
   d.control_period_s = 0.1;
   d.source = kCubesat;

@@ -3,13 +3,27 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <unistd.h>
+
 #include "scenarios/registry.hpp"
 
 namespace adcs::sim::test {
+
+//! An empty directory of its own for the running test: <tmp>/<prefix>_<pid>_<test name>.
+inline std::filesystem::path fresh_test_dir(const std::string& prefix) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() /
+                       (prefix + "_" + std::to_string(::getpid()) + "_" +
+                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
 
 inline double metric(const RunResult& r, const std::string& name) {
   if (!r.has_metric(name)) ADD_FAILURE() << "no metric " << name;

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "cli_test_fixture.hpp"
 
 namespace adcs::sim::cli {
 namespace {
@@ -54,24 +55,12 @@ class Fake final : public Scenario {
   Mode mode_;
 };
 
-class CliTest : public ::testing::Test {
+class CliTest : public adcs::sim::test::CliFixture {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() /
-            ("adcs_cli_test_" + std::to_string(::getpid()) + "_" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    make_root("adcs_cli_test");
     for (const Fake& f : fakes_) catalog_.scenarios.push_back(&f);
   }
-  void TearDown() override { fs::remove_all(root_); }
-
-  int cli(std::vector<std::string> args) {
-    out_.str("");
-    err_.str("");
-    return run_cli(args, catalog_, out_, err_);
-  }
-  std::string dir(const std::string& sub = "out") const { return (root_ / sub).string(); }
   std::vector<std::string> files(const std::string& sub = "out") const {
     std::vector<std::string> v;
     if (!fs::exists(root_ / sub)) return v;
@@ -89,18 +78,10 @@ class CliTest : public ::testing::Test {
     const std::string s = err_.str();
     return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
   }
-  static std::string slurp(const fs::path& p) {
-    std::ifstream f(p);
-    return std::string(std::istreambuf_iterator<char>(f), {});
-  }
-
   const std::vector<Fake> fakes_{{"fake", Mode::ok},          {"throws", Mode::throws},
                                  {"no-csv", Mode::no_csv},     {"param-error", Mode::param_error},
                                  {"partial", Mode::partial},   {"dup-metric", Mode::dup_metric},
                                  {"chatty", Mode::chatty}};
-  Catalog catalog_;
-  fs::path root_;
-  std::ostringstream out_, err_;
 };
 
 TEST_F(CliTest, ListAndHelp) {

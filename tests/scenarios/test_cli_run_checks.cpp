@@ -14,6 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
+#include "cli_test_fixture.hpp"
 #include "scenarios/registry.hpp"
 
 namespace adcs::sim::cli {
@@ -47,31 +48,16 @@ class TolFake final : public Scenario {
   }
 };
 
-class CliRunChecks : public ::testing::Test {
+class CliRunChecks : public adcs::sim::test::CliFixture {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() /
-            ("adcs_cli_checks_" + std::to_string(::getpid()) + "_" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    make_root("adcs_cli_checks");
     catalog_.scenarios.push_back(&fake_);
     for (const char* n : {"rigid-rw-mrp-pd", "rigid-rw-torquefree"}) {
       const Scenario* s = find_scenario(n);
       ASSERT_NE(s, nullptr) << n;
       catalog_.scenarios.push_back(s);
     }
-  }
-  void TearDown() override { fs::remove_all(root_); }
-  int cli(std::vector<std::string> args) {
-    out_.str("");
-    err_.str("");
-    return run_cli(args, catalog_, out_, err_);
-  }
-  std::string dir(const std::string& sub = "out") const { return (root_ / sub).string(); }
-  static std::string slurp(const fs::path& p) {
-    std::ifstream f(p);
-    return std::string(std::istreambuf_iterator<char>(f), {});
   }
   //! The "parameters" member of `key` in a pretty JSON written by adcs-sim (one line each).
   static std::string param_line(const std::string& json, const std::string& key) {
@@ -81,9 +67,6 @@ class CliRunChecks : public ::testing::Test {
   }
 
   TolFake fake_;
-  Catalog catalog_;
-  fs::path root_;
-  std::ostringstream out_, err_;
 };
 
 TEST_F(CliRunChecks, RefusesDerivedValuesThatMakeNoSenseBeforeRunning) {
