@@ -81,14 +81,12 @@ double singularity_measure(const Mat<3, L>& X, double& scale, Mat3& G) noexcept 
   return std::sqrt(std::max(G.determinant(), 0.0));
 }
 
-//! Fills the measure and the torque error of u, and grades a command that was written: ok /
-//! the given regularised status while e ≤ bound, request_not_met beyond it.
+//! Fills the torque error of u and grades a command that was written: `within` (ok or the given
+//! regularised status) while e ≤ bound, request_not_met beyond it. The caller fills the
+//! singularity measure (steer_escape has it already).
 template <int L>
 Status grade_command(const Mat<3, L>& X, const Vec3& v, const Vec<L>& u, double bound, Status within,
                      SteeringInfo& info) noexcept {
-  double scale = 0.0;
-  Mat3 G;
-  info.singularity_measure = singularity_measure<L>(X, scale, G);
   const double v_norm = v.norm();
   const Vec3 r = X * u - v;
   info.torque_error = v_norm > 0.0 ? r.norm() / v_norm : (u.isZero(0.0) ? 0.0 : 1.0);
@@ -119,6 +117,9 @@ template <int L>
   local.mode = local.pinv.damped ? SteeringMode::singularity_robust : SteeringMode::pseudo_inverse;
   local.regularization = local.pinv.damping;
   if (usable(s)) {
+    double scale = 0.0;
+    Mat3 G;
+    local.singularity_measure = detail::singularity_measure<L>(X, scale, G);
     s = detail::grade_command<L>(X, v, candidate, params.max_torque_error, s, local);
     u = candidate;
   }
@@ -196,8 +197,8 @@ template <int L>
     if (!all_finite(candidate)) return Status::out_of_range;
     local.regularization = lambda;
   }
-  const Status s = detail::grade_command<L>(X, v, candidate, params.max_torque_error, Status::ill_conditioned, local);
   local.singularity_measure = m;
+  const Status s = detail::grade_command<L>(X, v, candidate, params.max_torque_error, Status::ill_conditioned, local);
   const Status graded = (s == Status::ill_conditioned && local.torque_error <= kSteeringOkTorqueError) ? Status::ok : s;
   u = candidate;
   if (info) *info = local;
