@@ -90,6 +90,9 @@ class FlexibleScenario final : public Scenario {
     p.name("units", "U_rad", {"U_rad", "U_deg"}, "spec B.4 #18: U_rad reproduces all claims");
     p.name("robust_clamp", "off", {"off", "on"},
            "spec §B.3 step 3: on = clamp z at a funnel edge and continue (flagged)");
+    p.name("funnel_recovery", "none", {"none", "reopen"},
+           "seed 002's law has no recovery (none); reopen = the library default (issue 15): re-open a "
+           "violated funnel from the current error, counted");
     p.vector("window_s", {40.0, 100.0}, "s", std::string(kB5) + ": steady-state window W_ss");
     p.number("record_every", 100, "samples", "CSV decimation (in control samples)");
     if (half_)
@@ -99,8 +102,8 @@ class FlexibleScenario final : public Scenario {
       p.number("dropout_duration_s", 2.0, "s", "issue 7: the rate measurement is NaN for 2 s");
       p.name("on_failure", "hold_last", {"hold_last", "safe_command"},
              "issue 7: the torque is held through the dropout (the paper's ZOH reading); safe_command "
-             "(zero torque, the library default) leaves the funnel within the 2 s and the paper law has "
-             "no recovery (issue 15: funnel recovery, not yet built)");
+             "(zero torque, the library default) leaves the funnel within the 2 s: with "
+             "funnel_recovery=none the paper law cannot come back, with reopen it does (issue 15)");
     }
   }
 
@@ -214,6 +217,7 @@ class FlexibleScenario final : public Scenario {
     for (int i = 0; i < 3; ++i) pp.rho[i] = PerformanceFunction{rho0(i), rinf(i), k_rho(i)};
     pp.delta = p.get_vec<3>("delta");
     pp.robust_clamp = p.get_name("robust_clamp") == "on";
+    pp.recovery = p.get_name("funnel_recovery") == "reopen" ? FunnelRecovery::reopen : FunnelRecovery::none;
     std::optional<PpcNeural> ppc;
     std::optional<AdaptiveTracking> atc;
     if (ppc_) {
@@ -355,6 +359,7 @@ class FlexibleScenario final : public Scenario {
                  {"err_ss_max_deg_y", err_ss(1)},
                  {"err_ss_max_deg_z", err_ss(2)},
                  {"funnel_violations", double(violations)},
+                 {"funnel_recoveries", ppc_ ? double(ppc->funnel_recoveries()) : 0.0},
                  {"zero_crossings", double(crossings)},
                  {"err_final_deg_x", e_final(0)},
                  {"err_final_deg_y", e_final(1)},

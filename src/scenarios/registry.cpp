@@ -29,6 +29,7 @@ std::unique_ptr<Scenario> make_se3_ftsmc();
 std::unique_ptr<Scenario> make_se3_campaign();
 std::unique_ptr<Scenario> make_cmg_singularity_escape();
 std::unique_ptr<Scenario> make_cubesat_mrp_pd();
+std::unique_ptr<Scenario> make_cubesat_ppc_10hz();
 
 namespace {
 
@@ -56,6 +57,7 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_se3_campaign());
   v.push_back(make_cmg_singularity_escape());
   v.push_back(make_cubesat_mrp_pd());
+  v.push_back(make_cubesat_ppc_10hz());
   return v;
 }
 

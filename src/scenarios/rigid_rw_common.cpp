@@ -3,9 +3,33 @@
 #include <cmath>
 
 #include "adcs/math/mrp.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
 #include "sim/random.hpp"
 
 namespace adcs::sim {
+
+CubesatManoeuvre cubesat_12u_manoeuvre() {
+  CubesatManoeuvre c;
+  c.source = "issue 15: 12U cubesat, J diag(0.20, 0.25, 0.15), 4 wheels at 30 deg, 3 mN m, 30 deg slew + 300 s hold";
+  RigidRwDefaults& d = c.defaults;
+  d.sigma0_BN = {0.0, 0.0, 0.0};
+  d.omega0_BN_B = {0.0, 0.0, 0.0};
+  d.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
+  d.J_kgm2 = {{0.20, 0.0, 0.0}, {0.0, 0.25, 0.0}, {0.0, 0.0, 0.15}};
+  d.wheel_Js_kgm2 = {2e-5, 2e-5, 2e-5, 2e-5};  // ours: a small cubesat wheel (~2e-5 kg m^2)
+  d.duration_s = 420.0;  // slew (~100 s) + the 300 s hold
+  d.control_period_s = 0.1;
+  d.source = c.source;
+  Mat<3, kRigidRwWheels> A;
+  (void)wheel_pyramid_axes<kRigidRwWheels>(30.0 * kPiRad / 180.0, A);  // 30 deg is in range: cannot fail
+  for (int j = 0; j < kRigidRwWheels; ++j) d.wheel_axes_B.push_back({A(0, j), A(1, j), A(2, j)});
+  d.wheel_axes_source = "issue 15: four wheels in a pyramid at 30 deg elevation (azimuths 0, 90, 180, 270 deg)";
+  // 30 deg about e = (1, 2, 3)/sqrt(14): sigma = tan(30 deg / 4) e.
+  const double t4 = std::tan(30.0 * kPiRad / 180.0 / 4.0), n = std::sqrt(14.0);
+  c.sigma_RN = {t4 / n, 2.0 * t4 / n, 3.0 * t4 / n};
+  c.torque_limit_Nm = 3e-3;
+  return c;
+}
 
 void declare_rigid_rw(ParamSet& p, const RigidRwDefaults& d) {
   p.number("duration_s", d.duration_s, "s", d.source);

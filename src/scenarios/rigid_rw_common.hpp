@@ -29,6 +29,17 @@ struct RigidRwDefaults {
   std::string wheel_axes_source = {};
 };
 
+//! The 12U cubesat manoeuvre of issue 15, flown by cubesat-mrp-pd and cubesat-ppc-10hz: J
+//! diag(0.20, 0.25, 0.15) kg m², four 3 mN m wheels in a 30° pyramid, at rest, a 30° rest-to-rest
+//! slew about (1, 2, 3)/√14 and a 300 s hold, at 10 Hz.
+struct CubesatManoeuvre {
+  RigidRwDefaults defaults;      //!< vehicle, initial state, duration, 10 Hz
+  std::vector<double> sigma_RN;  //!< [-] the inertial target, tan(30°/4) (1, 2, 3)/√14
+  double torque_limit_Nm = 0.0;  //!< per wheel
+  const char* source = "";       //!< the issue's words for all of the above
+};
+CubesatManoeuvre cubesat_12u_manoeuvre();
+
 //! Declares duration_s, control_period_s, J_kgm2, wheel_axes_B, wheel_Js_kgm2, sigma0_BN,
 //! omega0_BN_B, Omega0_rad_s, omega0_dispersion_rad_s, integrator, rtol, atol, rk4_step_s,
 //! record_every.

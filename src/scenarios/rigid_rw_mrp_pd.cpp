@@ -10,7 +10,6 @@
 
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/control/mrp_pd.hpp"
-#include "adcs/plant/vscmg_configurations.hpp"
 #include "scenarios/rigid_rw_common.hpp"
 #include "sim/metrics.hpp"
 #include "sim/sampled_data.hpp"
@@ -23,7 +22,6 @@ namespace {
 constexpr const char* kSource = "assumed: foundation baseline, not from a paper";
 constexpr const char* kIssue = "issue 2 (foundation): inertia diag(900,800,600), 10 Hz, 0.2 N m";
 // cubesat-mrp-pd: the 12U cubesat of issue 15, gains chosen as a user would (see declare()).
-constexpr const char* kCubesat = "issue 15: 12U cubesat, J diag(0.20, 0.25, 0.15), 4 wheels at 30 deg, 3 mN m";
 constexpr const char* kCubesatOurs = "ours: chosen for the 12U cubesat (issue 15), see the scenario file";
 
 //! Which vehicle the MRP PD scenario flies.
@@ -37,21 +35,15 @@ struct MrpPdVehicle {
   std::string gain_source, limit_source;
 };
 
-//! Both vehicles start at rest, wheels stopped, at sigma_BN = 0 (the target is sigma_RN).
-MrpPdVehicle at_rest_vehicle() {
-  MrpPdVehicle v;
-  v.defaults.sigma0_BN = {0.0, 0.0, 0.0};
-  v.defaults.omega0_BN_B = {0.0, 0.0, 0.0};
-  v.defaults.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
-  return v;
-}
-
 MrpPdVehicle foundation_vehicle() {
-  MrpPdVehicle v = at_rest_vehicle();
+  MrpPdVehicle v;  // at rest, wheels stopped, at sigma_BN = 0 (the target is sigma_RN)
   v.name = "rigid-rw-mrp-pd";
   v.description = "MRP PD slew to an inertial target, 4 reaction wheels (3 orthogonal + 1 skewed), "
                   "min-norm allocation with 0.2 N m limit, 10 Hz";
   RigidRwDefaults& d = v.defaults;
+  d.sigma0_BN = {0.0, 0.0, 0.0};
+  d.omega0_BN_B = {0.0, 0.0, 0.0};
+  d.Omega0_rad_s = {0.0, 0.0, 0.0, 0.0};
   d.J_kgm2 = {{900.0, 0.0, 0.0}, {0.0, 800.0, 0.0}, {0.0, 0.0, 600.0}};
   d.wheel_Js_kgm2 = {0.05, 0.05, 0.05, 0.05};
   d.duration_s = 1200.0;
@@ -70,35 +62,24 @@ MrpPdVehicle foundation_vehicle() {
   return v;
 }
 
-//! The 12U cubesat of issue 15: a 30 deg rest-to-rest slew about (1, 2, 3)/sqrt(14), then a
-//! 300 s hold, at 10 Hz on four 3 mN m wheels in a 30 deg pyramid.
+//! The 12U cubesat of issue 15 (cubesat_12u_manoeuvre()) under MRP PD.
 MrpPdVehicle cubesat_vehicle() {
-  MrpPdVehicle v = at_rest_vehicle();
+  const CubesatManoeuvre c = cubesat_12u_manoeuvre();
+  MrpPdVehicle v;
   v.name = "cubesat-mrp-pd";
   v.description = "12U cubesat (issue 15): 30 deg rest-to-rest slew about (1,2,3)/sqrt(14) and a 300 s hold, "
                   "MRP PD at 10 Hz, 4 wheels in a 30 deg pyramid, 3 mN m each";
-  RigidRwDefaults& d = v.defaults;
-  d.J_kgm2 = {{0.20, 0.0, 0.0}, {0.0, 0.25, 0.0}, {0.0, 0.0, 0.15}};
-  d.wheel_Js_kgm2 = {2e-5, 2e-5, 2e-5, 2e-5};  // ours: a small cubesat wheel (~2e-5 kg m^2)
-  d.duration_s = 420.0;  // slew (~100 s) + the 300 s hold
-  d.control_period_s = 0.1;
-  d.source = kCubesat;
-  Mat<3, 4> A;
-  (void)wheel_pyramid_axes<4>(30.0 * kPiRad / 180.0, A);  // 30 deg is in range: cannot fail
-  for (int j = 0; j < 4; ++j) d.wheel_axes_B.push_back({A(0, j), A(1, j), A(2, j)});
-  d.wheel_axes_source = "issue 15: four wheels in a pyramid at 30 deg elevation (azimuths 0, 90, 180, 270 deg)";
-  // 30 deg about e = (1, 2, 3)/sqrt(14): sigma = tan(30 deg / 4) e.
-  const double t4 = std::tan(30.0 * kPiRad / 180.0 / 4.0), n = std::sqrt(14.0);
-  v.sigma_RN = {t4 / n, 2.0 * t4 / n, 3.0 * t4 / n};
+  v.defaults = c.defaults;
+  v.sigma_RN = c.sigma_RN;
   // Gains as a user would choose them: critically damped axes (sigma ~ phi/4, so
   // K = 4 J_i w_n^2, P_i = 2 J_i w_n) with w_n = 0.1 rad/s on the largest inertia; the 30 deg
   // step then asks K sigma ~ 0.7 mN m, within one wheel's 3 mN m, so the slew is unsaturated.
   v.K_Nm = 4.0 * 0.25 * 0.1 * 0.1;
   v.P_Nms = {2.0 * 0.20 * 0.1, 2.0 * 0.25 * 0.1, 2.0 * 0.15 * 0.1};
-  v.torque_limit_Nm = 3e-3;
+  v.torque_limit_Nm = c.torque_limit_Nm;
   v.settle_band_rad = 1e-3;
   v.gain_source = kCubesatOurs;
-  v.limit_source = kCubesat;
+  v.limit_source = c.source;
   return v;
 }
 

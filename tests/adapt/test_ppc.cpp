@@ -462,4 +462,87 @@ TEST(PpcTransform, NonFiniteInputIsRejectedWithOutputUntouched) {
     EXPECT_TRUE(is_sentinel(out));
   }
 }
+
+// ------------------------------------------------------------ funnel recovery (issue 15)
+
+// reopen(): only the violated channel gets a new performance function, started now, with the
+// error at |z| = kReopenZ, never narrower than the funnel it replaces, converging to the same
+// ρ∞ at the same rate; its branch follows the sign of the error.
+TEST(PpcReopen, ReopensOnlyTheViolatedChannelFromTheCurrentError) {
+  Ppc ppc(scenario_params());
+  ASSERT_EQ(ppc.init(kE0), Status::ok);
+  const double t = 20.0, rho = adcs::evaluate(kRho, t).rho;
+  const V3 e(3.0 * rho, 0.5 * rho, -0.5 * rho);  // channel 0 beyond its upper edge
+  Ppc::Sample out;
+  ASSERT_EQ(ppc.transform(t, e, V3::Zero(), out), Status::out_of_range);
+  int n = -1;
+  ASSERT_EQ(ppc.reopen(t, e, n), Status::ok);
+  EXPECT_EQ(n, 1);
+  EXPECT_EQ(ppc.start_time(0), t);
+  EXPECT_EQ(ppc.start_time(1), 0.0);
+  EXPECT_DOUBLE_EQ(ppc.active(0).rho0, e(0) / Ppc::kReopenZ);
+  EXPECT_EQ(ppc.active(0).rho_inf, kRho.rho_inf);
+  EXPECT_EQ(ppc.active(0).k, kRho.k);
+  EXPECT_EQ(ppc.active(1).rho0, kRho.rho0);  // untouched
+  EXPECT_DOUBLE_EQ(ppc.rho(0, t), e(0) / Ppc::kReopenZ);
+  EXPECT_EQ(ppc.rho(1, t), rho);
+  ASSERT_EQ(ppc.transform(t, e, V3::Zero(), out), Status::ok);
+  EXPECT_NEAR(out.z(0), Ppc::kReopenZ, 1e-15);
+  EXPECT_EQ(out.z(1), 0.5);
+  // Later the re-opened funnel decays towards the same rho_inf.
+  EXPECT_NEAR(ppc.rho(0, t + 200.0), kRho.rho_inf, 1e-12);
+  // Nothing violated: nothing changes, n = 0.
+  ASSERT_EQ(ppc.reopen(t, e, n), Status::ok);
+  EXPECT_EQ(n, 0);
+  EXPECT_EQ(ppc.start_time(0), t);
+  // init() restores the configured funnel.
+  ASSERT_EQ(ppc.init(kE0), Status::ok);
+  EXPECT_EQ(ppc.start_time(0), 0.0);
+  EXPECT_EQ(ppc.active(0).rho0, kRho.rho0);
+}
+
+TEST(PpcReopen, CrossingZeroWithDeltaZeroFlipsTheBranchAndNeverNarrows) {
+  Ppc ppc(scenario_params());  // δ = 0: an error may not cross zero
+  ASSERT_EQ(ppc.init(kE0), Status::ok);
+  const double t = 1.0, rho = adcs::evaluate(kRho, t).rho;
+  const V3 e(-1e-3 * rho, 0.5 * rho, -0.5 * rho);  // channel 0 just below zero on branch +
+  int n = 0;
+  ASSERT_EQ(ppc.reopen(t, e, n), Status::ok);
+  EXPECT_EQ(n, 1);
+  EXPECT_EQ(ppc.branch(0), PpcBranch::negative);
+  EXPECT_EQ(ppc.active(0).rho0, rho);  // |e|/0.5 is tiny: the funnel in force is kept
+  Ppc::Sample out;
+  EXPECT_EQ(ppc.transform(t, e, V3::Zero(), out), Status::ok);
+  // Late in the run rho(t) = rho_inf to machine precision: the new rho0 is 2 rho_inf (> rho_inf).
+  const double late = 1e4;
+  ASSERT_EQ(ppc.init(kE0), Status::ok);
+  ASSERT_EQ(ppc.rho(1, late), kRho.rho_inf);
+  ASSERT_EQ(ppc.reopen(late, V3(0.5 * kRho.rho_inf, -1e-12, -0.5 * kRho.rho_inf), n), Status::ok);
+  EXPECT_EQ(ppc.active(1).rho0, 2.0 * kRho.rho_inf);
+  EXPECT_TRUE(adcs::valid(ppc.active(1)));
+}
+
+TEST(PpcReopen, RefusesWhatNoFunnelCanHoldAndChangesNothing) {
+  Ppc ppc(scenario_params());
+  ASSERT_EQ(ppc.init(kE0), Status::ok);
+  const double t = 5.0, rho = adcs::evaluate(kRho, t).rho;
+  int n = 7;
+  // δ = 0 and e_1 = 0 exactly: on the edge of both branches.
+  EXPECT_EQ(ppc.reopen(t, V3(0.0, 0.5 * rho, -0.5 * rho), n), Status::out_of_range);
+  EXPECT_EQ(n, 0);
+  // ρ0' = |e|/0.5 overflows.
+  EXPECT_EQ(ppc.reopen(t, V3(1.5e308, 0.5 * rho, -0.5 * rho), n), Status::out_of_range);
+  EXPECT_EQ(ppc.reopen(t, V3(kNaN, 0.5 * rho, -0.5 * rho), n), Status::non_finite_input);
+  EXPECT_EQ(ppc.reopen(kInf, V3(2.0 * rho, 0.5 * rho, -0.5 * rho), n), Status::non_finite_input);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(ppc.start_time(i), 0.0) << i;
+    EXPECT_EQ(ppc.active(i).rho0, kRho.rho0) << i;
+  }
+  EXPECT_EQ(ppc.branch(0), PpcBranch::positive);
+  EXPECT_EQ(ppc.branch(2), PpcBranch::negative);
+  // An unknown recovery value is refused at construction.
+  Ppc::Params bad = scenario_params();
+  bad.recovery = static_cast<adcs::FunnelRecovery>(7);
+  EXPECT_EQ(Ppc(bad).status(), Status::invalid_parameter);
+}
 }  // namespace

@@ -133,6 +133,7 @@ TEST(PpcNeural, BadInputGivesTheHeldCommandUnderHoldLastAndKeepsEstimates) {
   // (The default policy outputs zero torque instead: tests/control/test_failure_policy.cpp.)
   adcs::PpcNeuralParams params = ppc_params();
   params.gains.on_failure = adcs::FailurePolicy::hold_last;
+  params.ppc.recovery = adcs::FunnelRecovery::none;  // seed 002's law: a funnel violation is refused
   Loop<adcs::PpcNeural> loop(params);
   for (int k = 0; k < 50; ++k) loop.step();
   const adcs::Mat<7, 3> W = loop.law.weights();
@@ -188,8 +189,10 @@ TEST(PpcNeural, RobustClampFlagsTheEdgeAndStaysFinite) {
   EXPECT_TRUE(std::isfinite(loop.law.mu()));
 }
 
-TEST(PpcNeural, FirstErrorOutsideTheFunnelIsRefused) {
-  adcs::PpcNeural law(ppc_params());
+TEST(PpcNeural, FirstErrorOutsideTheFunnelIsRefusedWithoutRecovery) {
+  adcs::PpcNeuralParams none = ppc_params();
+  none.ppc.recovery = adcs::FunnelRecovery::none;
+  adcs::PpcNeural law(none);
   adcs::PpcNeural::Measurement m;
   m.angles = Vec3(0.35, 0.0, 0.0) * kD2r;  // |e_1(0)| > ρ0 = 0.3°
   adcs::PpcNeural::Command out;
@@ -204,6 +207,48 @@ TEST(PpcNeural, FirstErrorOutsideTheFunnelIsRefused) {
   bad = ppc_params();
   bad.gains.compensator.sigma = 0.0;
   EXPECT_EQ(adcs::PpcNeural(bad).status(), Status::invalid_parameter);
+}
+
+// Funnel recovery (issue 15, the default): an error pushed out of the funnel re-opens it from the
+// current error; the step is the law's (usable, flagged constraint_violated, counted), finite, and
+// the next samples are ordinary steps inside the new funnel.
+TEST(PpcNeural, FunnelViolationReopensTheFunnelCountedAndFinite) {
+  Loop<adcs::PpcNeural> loop(ppc_params());
+  for (int k = 0; k < 50; ++k) loop.step();
+  ASSERT_EQ(loop.nonok, 0);
+  const double mu = loop.law.mu();
+  adcs::PpcNeural::Measurement m = loop.measure();
+  m.angles(0) += 1.0 * kD2r;  // far beyond rho(t) < 0.3 deg
+  adcs::PpcNeural::Command out;
+  adcs::PpcNeural::Diagnostics dg;
+  EXPECT_EQ(loop.law.step(m, loop.ref.sample(loop.t), out, &dg), Status::constraint_violated);
+  EXPECT_EQ(loop.law.funnel_recoveries(), 1);
+  EXPECT_TRUE(dg.funnel_reopened);
+  EXPECT_GT(dg.funnel_margin, 0.0);  // inside the re-opened funnel
+  EXPECT_TRUE(adcs::all_finite(out.torque_B));
+  EXPECT_NE(out.torque_B, Vec3::Zero());  // the law's command, not the failure command
+  EXPECT_NE(loop.law.mu(), mu);           // the estimates carry on
+  EXPECT_EQ(loop.law.funnel().start_time(0), loop.t);
+  EXPECT_EQ(loop.law.funnel().start_time(1), 0.0);  // channels inside keep their funnel
+  // Back to the true state: inside the (wider) funnel, ordinary steps, no new recovery.
+  EXPECT_EQ(loop.law.step(loop.measure(), loop.ref.sample(loop.t), out, &dg), Status::ok);
+  EXPECT_FALSE(dg.funnel_reopened);
+  EXPECT_EQ(loop.law.funnel_recoveries(), 1);
+  loop.law.reset();
+  EXPECT_EQ(loop.law.funnel_recoveries(), 0);
+}
+
+TEST(PpcNeural, FirstErrorOutsideTheFunnelReopensIt) {
+  adcs::PpcNeural law(ppc_params());
+  adcs::PpcNeural::Measurement m;
+  m.angles = Vec3(0.35, 0.1, -0.1) * kD2r;  // |e_1(0)| > rho0 = 0.3 deg
+  adcs::PpcNeural::Command out;
+  EXPECT_EQ(law.step(m, adcs::EulerReferenceSample{}, out), Status::constraint_violated);
+  EXPECT_EQ(law.funnel_recoveries(), 1);
+  EXPECT_TRUE(adcs::all_finite(out.torque_B));
+  EXPECT_DOUBLE_EQ(law.funnel().active(0).rho0, 0.35 * kD2r / adcs::PrescribedPerformance<3>::kReopenZ);
+  EXPECT_EQ(law.funnel().active(1).rho0, 0.3 * kD2r);
+  EXPECT_EQ(law.branch(2), adcs::PpcBranch::negative);
 }
 
 // Found by tests/fuzz (fuzz_seed002): a rejected first step used to latch the funnel branches

@@ -1,5 +1,6 @@
 // libFuzzer harness, seed 002: PpcNeural (PPATC: funnel transform + RBF + adaptive bound) and
-// AdaptiveTracking (ATC), in both angle-unit conventions, PPATC with and without the robust clamp.
+// AdaptiveTracking (ATC), in both angle-unit conventions, PPATC with and without the robust clamp
+// and with and without the funnel recovery (issue 15).
 // Input format: fuzz_common.hpp; first byte = law, second = configuration.
 //
 // Asserted on every step (besides "no crash, no sanitizer report"):
@@ -8,7 +9,10 @@
 //  - a status that is not usable() leaves the command at the last applied one and the RBF
 //    weights Ŵ, the bound estimate μ̂ and (PPATC) the funnel branches bitwise unchanged;
 //  - an applied step keeps Ŵ finite and μ̂ finite and >= 0 (spec B-S12), and reports
-//    constraint_violated only in robust-clamp mode;
+//    constraint_violated only in robust-clamp mode or when it re-opened the funnel;
+//  - a re-opening (PPATC, recovery = reopen) is counted exactly once, only on an applied step,
+//    starts the re-opened channels at m.t with a valid performance function (ρ0' > ρ∞), and is
+//    flagged in the diagnostics; without the recovery the count stays 0.
 //  - RbfCompensator::set_state (warm start) refuses non-finite values and μ̂ < 0 untouched.
 #include <array>
 #include <cstdint>
@@ -27,13 +31,16 @@ adcs::PpcNeuralParams ppc_params(int config) {
   adcs::PpcNeuralParams p{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
   p.gains.units = (config & 1) ? adcs::AngleUnits::degrees : adcs::AngleUnits::radians;
   p.ppc.robust_clamp = (config & 2) != 0;
+  p.ppc.recovery = (config & 16) ? adcs::FunnelRecovery::reopen : adcs::FunnelRecovery::none;
   return p;
 }
 
 const adcs::PpcNeural& ppc_proto(int config) {
-  static const adcs::PpcNeural protos[4] = {adcs::PpcNeural(ppc_params(0)), adcs::PpcNeural(ppc_params(1)),
-                                            adcs::PpcNeural(ppc_params(2)), adcs::PpcNeural(ppc_params(3))};
-  return protos[config & 3];
+  static const adcs::PpcNeural protos[8] = {
+      adcs::PpcNeural(ppc_params(0)),  adcs::PpcNeural(ppc_params(1)),  adcs::PpcNeural(ppc_params(2)),
+      adcs::PpcNeural(ppc_params(3)),  adcs::PpcNeural(ppc_params(16)), adcs::PpcNeural(ppc_params(17)),
+      adcs::PpcNeural(ppc_params(18)), adcs::PpcNeural(ppc_params(19))};
+  return protos[(config & 3) | ((config & 16) >> 2)];
 }
 
 const adcs::AdaptiveTracking& atc_proto(int config) {
@@ -48,12 +55,23 @@ struct Snapshot {
   adcs::Mat<7, 3> W;
   double mu;
   std::array<adcs::PpcBranch, 3> branch{};
+  std::array<double, 3> t0{}, rho0{};  // the funnel in force (PPATC)
+  long recoveries = 0;
   explicit Snapshot(Law& law) : W(law.weights()), mu(law.mu()) {
-    if constexpr (std::is_same_v<Law, adcs::PpcNeural>)
-      for (int i = 0; i < 3; ++i) branch[static_cast<std::size_t>(i)] = law.branch(i);
+    if constexpr (std::is_same_v<Law, adcs::PpcNeural>) {
+      for (int i = 0; i < 3; ++i) {
+        const auto u = static_cast<std::size_t>(i);
+        branch[u] = law.branch(i);
+        t0[u] = law.funnel().start_time(i);
+        rho0[u] = law.funnel().active(i).rho0;
+      }
+      recoveries = law.funnel_recoveries();
+    }
   }
   bool operator==(const Snapshot& o) const {
-    return fuzz::same_bits_mat(W, o.W) && fuzz::same_bits(mu, o.mu) && branch == o.branch;
+    bool funnel = branch == o.branch && recoveries == o.recoveries;
+    for (std::size_t i = 0; i < 3; ++i) funnel = funnel && fuzz::same_bits(t0[i], o.t0[i]) && fuzz::same_bits(rho0[i], o.rho0[i]);
+    return fuzz::same_bits_mat(W, o.W) && fuzz::same_bits(mu, o.mu) && funnel;
   }
 };
 
@@ -73,6 +91,7 @@ void run(Law& law, int config, fuzz::Reader& r) {
   }
   const adcs::SinusoidalEulerReference ref;
   const bool robust = std::is_same_v<Law, adcs::PpcNeural> && (config & 2);
+  const bool reopen = std::is_same_v<Law, adcs::PpcNeural> && (config & 16);
   adcs::EulerTrackingCommand last;  // the last applied command (zero after construction)
   typename Law::Diagnostics diag;
   for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
@@ -99,13 +118,26 @@ void run(Law& law, int config, fuzz::Reader& r) {
     fuzz::check_status_vs_input(s, finite_in, "Euler tracking law: non-finite input not rejected");
     const Snapshot<Law> after(law);
     if (!fuzz::applied(s)) {
-      FUZZ_CHECK(after == before, "Euler tracking law: rejected step changed Ŵ, μ̂ or the funnel branches");
+      FUZZ_CHECK(after == before, "Euler tracking law: rejected step changed Ŵ, μ̂, the funnel or its count");
       FUZZ_CHECK(fuzz::is_failure_command(adcs::FailurePolicy::safe_command, out.torque_B, last.torque_B),
                  "Euler tracking law: rejected step did not output the failure command (zero torque)");
       continue;
     }
-    FUZZ_CHECK(s == Status::ok || (robust && s == Status::constraint_violated),
+    const bool reopened = after.recoveries != before.recoveries;
+    if (reopened) fuzz::stat(2, "PpcNeural reopened", s);
+    FUZZ_CHECK(!reopened || (reopen && after.recoveries == before.recoveries + 1 && s == Status::constraint_violated),
+               "PpcNeural: funnel re-opened without the recovery, more than once, or not flagged");
+    FUZZ_CHECK(s == Status::ok || (s == Status::constraint_violated && (robust || reopened)),
                "Euler tracking law: undocumented usable status");
+    if constexpr (std::is_same_v<Law, adcs::PpcNeural>) {
+      if ((config & 8) && reopened) FUZZ_CHECK(diag.funnel_reopened, "PpcNeural: re-opening not in the diagnostics");
+      for (int i = 0; i < 3 && reopened; ++i) {
+        const auto u = static_cast<std::size_t>(i);
+        if (fuzz::same_bits(after.t0[u], before.t0[u]) && fuzz::same_bits(after.rho0[u], before.rho0[u])) continue;
+        FUZZ_CHECK(fuzz::same_bits(after.t0[u], m.t) && adcs::valid(law.funnel().active(i)),
+                   "PpcNeural: re-opened channel not started at m.t with a valid performance function");
+      }
+    }
     FUZZ_CHECK(fuzz::finite(after.W) && fuzz::finite(after.mu) && after.mu >= 0.0,
                "Euler tracking law: committed a non-finite or negative estimate");
     last = out;

@@ -91,13 +91,18 @@ CORPUS = {
         "mrp_pd_overflow": u8(2) + zero_vec() + bcast(sp("big")) + zeros(4) + bcast(sp("nmax")),
     },
     # law byte 0 = PpcNeural, 1 = AdaptiveTracking; config: 1 degrees, 2 robust clamp (PPATC),
-    # 4 warm start (Ŵ, μ̂), 8 diagnostics. Per step: t, angles, ω, ϑ_d, ϑ̇_d, ϑ̈_d offsets.
+    # 4 warm start (Ŵ, μ̂), 8 diagnostics, 16 funnel recovery (reopen). Per step: t, angles, ω, ϑ_d,
+    # ϑ̇_d, ϑ̈_d offsets.
     "fuzz_seed002": {
         "ppc_nominal": u8(0, 8) + zeros(6 * 8),
         "ppc_degrees_robust": u8(0, 1 | 2) + zeros(6) + sp("zero") + full(sc(0.5, -4), sp("zero"), sp("zero"))
         + zeros(4) + zeros(6 * 3),
         "ppc_funnel_edge_robust": u8(0, 2) + zeros(6) + sp("zero") + full(sc(0.2, -4), sp("zero"), sp("zero"))
         + zeros(4),
+        "ppc_funnel_edge_reopen": u8(0, 16 | 8) + zeros(6) + sp("zero") + full(sc(0.2, -4), sp("zero"), sp("zero"))
+        + zeros(4) + zeros(6 * 2),
+        "ppc_first_error_outside_reopen": u8(0, 16) + sp("zero") + full(sc(0.5, -2), sp("zero"), sp("zero"))
+        + zeros(4) + zeros(6 * 2),
         "ppc_nan_angle": u8(0, 0) + zeros(6) + sp("zero") + full(sp("nan"), sp("zero"), sp("zero")) + zeros(4),
         "ppc_inf_time": u8(0, 0) + sp("inf") + zeros(5) + zeros(6),
         "ppc_gimbal_lock": u8(0, 0) + zeros(6) + sp("zero") + full(sp("zero"), sp("halfpi"), sp("zero")) + zeros(4),

@@ -3,6 +3,9 @@
 // what happened; the hybrid law must stop commanding a failed actuator once FDIR reports it.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include <string>
 
 #include "scenario_test_util.hpp"
@@ -57,11 +60,27 @@ TEST(FaultScenarios, RateDropoutIsRejectedAndTheTorqueHeld) {
   EXPECT_EQ(metric(longer, "nonfinite_commands"), 0.0);
   EXPECT_GT(metric(longer, "funnel_violations_after_fault"), 0.0);
   // Under the library's default failure policy (zero torque while the rate is missing) the
-  // flexible spacecraft leaves the funnel within the 2 s, and the paper's law cannot come back:
-  // the finding that asks for a funnel recovery (issue 15). Still no non-finite command.
+  // flexible spacecraft leaves the funnel within the 2 s, and the paper's law cannot come back
+  // (funnel_recovery = none): out_of_range to the end. Still no non-finite command.
   const RunResult safe = run("flexible-fault-sensor-dropout", {{"on_failure", "safe_command"}});
   EXPECT_EQ(metric(safe, "steps_non_finite_input"), 20000.0);
   EXPECT_GT(metric(safe, "funnel_violations_after_fault"), 0.0);
+  EXPECT_GT(metric(safe, "steps_out_of_range"), 0.0);
   EXPECT_EQ(metric(safe, "nonfinite_commands"), 0.0);
+}
+
+// Issue 15: the library's defaults together (zero torque while the rate is missing, then the
+// funnel re-opened from the error the dropout left): one recovery, never out_of_range, and the
+// error is back near the paper's steady band within 8 s of the dropout's end.
+TEST(FaultScenarios, RateDropoutWithZeroTorqueRecoversThroughTheReopenedFunnel) {
+  const RunResult r = run("flexible-fault-sensor-dropout",
+                          {{"on_failure", "safe_command"}, {"funnel_recovery", "reopen"}, {"duration_s", "60"}});
+  EXPECT_EQ(metric(r, "steps_non_finite_input"), 20000.0);
+  EXPECT_EQ(metric(r, "steps_out_of_range"), 0.0);
+  EXPECT_GE(metric(r, "funnel_recoveries"), 1.0);
+  EXPECT_EQ(metric(r, "nonfinite_commands"), 0.0);
+  EXPECT_LT(metric(r, "att_err_max_rad"), 0.05 * 3.14159265358979323846 / 180.0);
+  for (const char* axis : {"x", "y", "z"})
+    EXPECT_LT(std::abs(metric(r, std::string("err_final_deg_") + axis)), 0.01) << axis;
 }
 }  // namespace

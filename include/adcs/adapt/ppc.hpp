@@ -14,6 +14,11 @@
 // At a funnel edge ε is ±∞. transform() never takes the logarithm there: it returns
 // out_of_range with the output untouched, or — in the optional robust mode — clamps z into the
 // interval with a 1e-12 margin, computes a finite result and returns constraint_violated.
+//
+// Funnel recovery (ours, issue 15; the paper's law has none): once the error has left its funnel
+// the paper's law is undefined for good, since ρ(t) only shrinks. reopen() gives each violated
+// channel a new performance function starting at the current time and error (see there), so a
+// law can continue after a disturbance it was not designed for; the law counts and reports it.
 #include <array>
 #include <cmath>
 
@@ -83,11 +88,18 @@ inline Status ppc_S_inverse(double z, PpcBranch b, double delta, PpcInverse& out
   return Status::ok;
 }
 
+//! What a PPC law does when the error has left its funnel (issue 15).
+enum class FunnelRecovery : unsigned char {
+  none,    //!< seed 002's law: out_of_range on every step until the error is back inside ρ(t)
+  reopen,  //!< PrescribedPerformance::reopen() from the current error, counted (the default)
+};
+
 template <int K>
 struct PpcParams {
   std::array<PerformanceFunction, K> rho{};  //!< one performance function per channel
   Vec<K> delta = Vec<K>::Zero();             //!< [-] overshoot parameters δ_i ∈ [0, 1]
   bool robust_clamp = false;  //!< clamp z at a funnel edge (flagged) instead of refusing
+  FunnelRecovery recovery = FunnelRecovery::reopen;  //!< after a violation (ours, issue 15)
 };
 
 //! Everything a PPC law needs from one error sample (spec §B.3 steps 2-7), per channel.
@@ -115,19 +127,29 @@ class PrescribedPerformance {
     bool ok = true;
     for (int i = 0; i < K; ++i)
       ok = ok && valid(p_.rho[i]) && std::isfinite(p_.delta(i)) && p_.delta(i) >= 0.0 && p_.delta(i) <= 1.0;
+    ok = ok && (p_.recovery == FunnelRecovery::none || p_.recovery == FunnelRecovery::reopen);
     status_ = ok ? Status::ok : Status::invalid_parameter;
     branch_.fill(PpcBranch::positive);
+    restart();
   }
 
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
   PpcBranch branch(int i) const noexcept { return branch_[i]; }
+  //! Channel i's performance function now in force and the time [s] it started (ρ0 and 0 until
+  //! the channel is re-opened).
+  const PerformanceFunction& active(int i) const noexcept { return rho_[i]; }
+  double start_time(int i) const noexcept { return t0_[i]; }
+  //! ρ_i(t) of the funnel in force (what transform() divides by).
+  double rho(int i, double t) const noexcept { return evaluate(rho_[i], t - t0_[i]).rho; }
 
   //! Fixes b_i = + if e_i(0) ≥ 0, else − (spec §B.3), and checks that e(0) is inside the
   //! funnel: out_of_range (branches still set) if some |z_i(0)| is on or beyond its edge.
+  //! Restores the configured performance functions, started at t = 0.
   [[nodiscard]] Status init(const Vec<K>& e0) noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(e0)) return Status::non_finite_input;
+    restart();
     bool inside = true;
     for (int i = 0; i < K; ++i) {
       branch_[i] = e0(i) >= 0.0 ? PpcBranch::positive : PpcBranch::negative;
@@ -146,7 +168,7 @@ class PrescribedPerformance {
     bool clamped = false;
     s.margin_min = INFINITY;
     for (int i = 0; i < K; ++i) {
-      const PerformanceSample f = evaluate(p_.rho[i], t);                     // step 2
+      const PerformanceSample f = evaluate(rho_[i], t - t0_[i]);              // step 2
       const double rho = f.rho, rd = f.rho_dot, rdd = f.rho_ddot;
       double z = e(i) / rho;                                                   // step 3
       const double margin = ppc_margin(z, branch_[i], p_.delta(i));
@@ -179,11 +201,56 @@ class PrescribedPerformance {
     return clamped ? Status::constraint_violated : Status::ok;
   }
 
+  //! Funnel recovery (ours, issue 15). Every channel i whose z_i = e_i/ρ_i(t) is on or beyond
+  //! its edge gets a new performance function starting at t,
+  //!   ρ_i'(t') = (ρ0' − ρ∞) e^{−k (t' − t)} + ρ∞,   ρ0' = max(|e_i| / kReopenZ, ρ_i(t), 2 ρ∞),
+  //! with ρ∞ and k unchanged, and its branch from the sign of e_i: the error restarts at half the
+  //! new funnel's width (|z_i| ≤ kReopenZ, ε_i near 0), the funnel is never narrower than the one it
+  //! replaces, and it again converges to ρ∞ at the configured rate. Channels still inside keep
+  //! their funnel. `reopened` = number of channels re-opened (0: nothing was violated).
+  //! ok; non_finite_input; out_of_range if a re-opened channel is still not strictly inside
+  //! (e_i = 0 with δ_i = 0, on no branch's interval) or ρ0' overflows. Nothing changes unless ok.
+  [[nodiscard]] Status reopen(double t, const Vec<K>& e, int& reopened) noexcept {
+    reopened = 0;
+    if (status_ != Status::ok) return status_;
+    if (!std::isfinite(t) || !all_finite(e)) return Status::non_finite_input;
+    std::array<PerformanceFunction, K> rho = rho_;
+    std::array<double, K> t0 = t0_;
+    std::array<PpcBranch, K> branch = branch_;
+    int n = 0;
+    for (int i = 0; i < K; ++i) {
+      const double rho_now = this->rho(i, t);
+      if (ppc_margin(e(i) / rho_now, branch[i], p_.delta(i)) > 0.0) continue;
+      const PerformanceFunction& f = rho_[i];
+      const double rho0 = std::fmax(std::fmax(std::fabs(e(i)) / kReopenZ, rho_now), 2.0 * f.rho_inf);
+      const PerformanceFunction g{rho0, f.rho_inf, f.k};
+      branch[i] = e(i) >= 0.0 ? PpcBranch::positive : PpcBranch::negative;
+      if (!valid(g) || !(ppc_margin(e(i) / rho0, branch[i], p_.delta(i)) > 0.0)) return Status::out_of_range;
+      rho[i] = g;
+      t0[i] = t;
+      ++n;
+    }
+    rho_ = rho;
+    t0_ = t0;
+    branch_ = branch;
+    reopened = n;
+    return Status::ok;
+  }
+
   //! Distance kept from a funnel edge by the robust clamp (spec §B.3 step 3).
   static constexpr double kClampMargin = 1e-12;
+  //! |z| of a re-opened channel's error at the re-opening (ours): mid-way to the edge.
+  static constexpr double kReopenZ = 0.5;
 
  private:
+  void restart() noexcept {
+    rho_ = p_.rho;
+    t0_.fill(0.0);
+  }
+
   Params p_;
+  std::array<PerformanceFunction, K> rho_{};  //!< in force: p_.rho until a channel is re-opened
+  std::array<double, K> t0_{};                //!< [s] when each channel's function started
   std::array<PpcBranch, K> branch_{};
   Status status_ = Status::ok;
 };

@@ -37,6 +37,7 @@ struct PpcNeuralDiagnostics {
   Vec3 robust = Vec3::Zero();     //!< [law units/s²] μ̂²s/(μ̂‖s‖ + σ)
   Vec3 e = Vec3::Zero();          //!< [rad] ϑ − ϑ_d
   double funnel_margin = 0.0;     //!< [-] min distance of z to its interval edge (> 0 inside)
+  bool funnel_reopened = false;   //!< this step re-opened the funnel (ppc.recovery = reopen)
 };
 
 class PpcNeural {
@@ -56,41 +57,66 @@ class PpcNeural {
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
 
-  //! Estimates to Ŵ = 0, μ̂ = 0; the funnel branches are fixed again by the next step's e.
+  //! Estimates to Ŵ = 0, μ̂ = 0, no recoveries; the funnel is fixed again by the next step's e.
   void reset() noexcept {
     core_.reset();
     started_ = false;
+    recoveries_ = 0;
   }
 
   //! One control sample at m.t [s] since the start of the manoeuvre (ρ(t) is measured from it).
-  //! ok; constraint_violated (robust mode: an error at its funnel edge was clamped, flagged);
-  //! out_of_range (funnel violated, or e(0) outside the funnel at the first step — the law is
-  //! undefined there); non_finite_input; singular (|θ| at gimbal lock). Except for ok and
-  //! constraint_violated, `out` is the failure command (zero torque, or the last good command under
-  //! gains.on_failure = hold_last) and the estimates and funnel branches
-  //! are untouched (the branches are fixed by the first step that is applied).
+  //! ok; constraint_violated (usable, the law's command: robust mode clamped an error at its
+  //! funnel edge, or the funnel was re-opened — see below); out_of_range (funnel violated with
+  //! ppc.recovery = none, or an overflow); non_finite_input; singular (|θ| at gimbal lock). Except
+  //! for ok and constraint_violated, `out` is the failure command (zero torque, or the last good
+  //! command under gains.on_failure = hold_last) and the estimates and the funnel are untouched.
+  //!
+  //! Funnel recovery (ppc.recovery = reopen, the default; ours, issue 15): when e has left its
+  //! funnel — or starts outside it — the violated channels' funnels are re-opened from the current
+  //! error (PrescribedPerformance::reopen), the law runs on them, the step returns
+  //! constraint_violated and funnel_recoveries() counts it. The adaptive estimates carry on.
   [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
                             Diagnostics* diag = nullptr) noexcept {
     out = core_.failure_command();
+    if (diag) diag->funnel_reopened = false;
     if (status_ != Status::ok) return status_;
     EulerTrackingCore::Kinematics k;
     const Status ks = core_.kinematics(m, r, k);
     if (ks != Status::ok) return ks;
     const double c = core_.angle_scale();
     const Vec3 e = c * k.e, e_dot = c * k.e_dot;  // law units
-    if (started_) return apply(ppc_, m, r, k, e, e_dot, out, diag);
-    // First step: fix the branches on a copy, kept only if the step is applied, so a rejected
-    // first sample (e.g. an overflow further down) does not latch branches from its e.
-    PrescribedPerformance<3> first = ppc_;
-    const Status init = first.init(e);
-    if (init != Status::ok) return init;
-    const Status s = apply(first, m, r, k, e, e_dot, out, diag);
-    if (usable(s)) {
-      ppc_ = first;
-      started_ = true;
+    const bool recover = p_.ppc.recovery == FunnelRecovery::reopen;
+    if (started_) {
+      const Status s = apply(ppc_, m, r, k, e, e_dot, out, diag);
+      if (s != Status::out_of_range || !recover) return s;
+    }
+    // First step, or a violation to recover from: change a copy of the funnel (the branches fixed
+    // from e(0), or re-opened), kept only if the step is applied, so a rejected sample (e.g. an
+    // overflow further down) never latches a funnel from its e.
+    PrescribedPerformance<3> funnel = ppc_;
+    if (!started_) {
+      const Status init = funnel.init(e);
+      if (init != Status::ok && !(init == Status::out_of_range && recover)) return init;
+    }
+    Status s = apply(funnel, m, r, k, e, e_dot, out, diag);
+    int reopened = 0;
+    if (s == Status::out_of_range && recover && funnel.reopen(m.t, e, reopened) == Status::ok && reopened > 0)
+      s = apply(funnel, m, r, k, e, e_dot, out, diag);
+    if (!usable(s)) return s;
+    ppc_ = funnel;
+    started_ = true;
+    if (reopened > 0) {
+      ++recoveries_;
+      if (diag) diag->funnel_reopened = true;
+      return Status::constraint_violated;
     }
     return s;
   }
+
+  //! Funnel re-openings since construction or reset() (each counts once, whatever the channels).
+  long funnel_recoveries() const noexcept { return recoveries_; }
+  //! The funnel in force (branches, performance functions, their start times).
+  const PrescribedPerformance<3>& funnel() const noexcept { return ppc_; }
 
   const Mat<7, 3>& weights() const noexcept { return core_.compensator().weights(); }
   double mu() const noexcept { return core_.compensator().mu(); }
@@ -138,6 +164,7 @@ class PpcNeural {
   EulerTrackingCore core_;
   PrescribedPerformance<3> ppc_;
   bool started_ = false;
+  long recoveries_ = 0;
   Status status_ = Status::ok;
 };
 
