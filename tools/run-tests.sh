@@ -7,6 +7,7 @@
 #      host/QEMU replays), the callgrind instruction counts, and adcs-sim / adcs-bench;
 #   3. ASan + UBSan tree (clang++-14, -Werror), build-asan (tools/run-sanitizers.sh): every unit,
 #      no-allocation, harness, CLI, parameter, foundation- and fault-scenario and install test,
+#      the example programs (examples/, which check their own results),
 #      and the four libFuzzer harnesses replaying their committed corpora plus new inputs.
 # Each test is built in the one tree where it is needed (docs/DECISIONS.md, "Each test in one
 # tree"); no test runs in neither. Every phase prints its wall and CPU time, and a table of all
@@ -34,13 +35,13 @@ if [ "$quick" -eq 1 ]; then
     -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS_DEBUG=-O2 \
     -DADCS_BUILD_BENCH=OFF -DADCS_TARGET_CHECK=OFF -DADCS_FUZZ=OFF
   phase build cmake --build "$build" -j "$jobs"
-  phase ctest ctest --test-dir "$build" --output-on-failure -j "$jobs" -L 'unit|nomalloc|sim'
+  phase ctest ctest --test-dir "$build" --output-on-failure -j "$jobs" -L 'unit|nomalloc|sim|examples'
   exit 0
 fi
 
 build=${1:-"$root/build"}
 phase configure cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=ON
+  -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=ON -DADCS_BUILD_EXAMPLES=OFF
 # The Cortex-M7 programs (ExternalProject, not in ALL) are built here with the rest rather than
 # inside ctest's target_compile_check, so the build phase shows their time and both cores share
 # them with the host objects.
