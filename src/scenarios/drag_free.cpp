@@ -33,6 +33,12 @@ struct NoiseStreams {
     for (int i = 0; i < 9; ++i) d.emplace_back(seed * 1000003u + 101u + i);
     for (int i = 0; i < 3; ++i) a.emplace_back(seed * 1000003u + 211u + i);
   }
+  //! The run's JSON record of where its noise came from (issue 15: every --seed draw is listed).
+  static UsedValue used(std::uint64_t seed) {
+    return UsedValue::number("noise_seed", double(seed), "-",
+                             "derived: --seed + 1; process, disturbance and accelerometer noise streams are "
+                             "Rng(noise_seed * 1000003 + 11 + i), + 101 + i, + 211 + i (src/scenarios/drag_free.cpp)");
+  }
 };
 
 // ------------------------------------------------------------------ shared configuration
@@ -250,6 +256,7 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
   }
   if (csv) csv->close();
   RunResult r;
+  r.used.push_back(NoiseStreams::used(ctx.seed + 1));
   const double L1 = rms(err[0]), L2 = rms(err[1]), L3 = rms(err[2]);
   r.metrics = {{"dist_rmse_L1", L1}, {"dist_rmse_L2", L2}, {"dist_rmse_L3", L3},
                {"accel_saturated_samples", double(saturated)},
@@ -435,6 +442,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
   out.rx_max = rx_max;
   out.rx_mean = rx_count ? rx_sum / rx_count : NAN;
   RunResult& r = out.result;
+  r.used.push_back(NoiseStreams::used(ctx.seed + 1));
   const double r2w[3] = {rms(e_r2[0]), rms(e_r2[1]), rms(e_r2[2])};
   const double r1w[3] = {rms(e_r1[0]), rms(e_r1[1]), rms(e_r1[2])};
   const double fusion = rms(f_err_fused), a1 = rms(f_err_1), a2 = rms(f_err_2);

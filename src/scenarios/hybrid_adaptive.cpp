@@ -180,6 +180,15 @@ class HybridScenario final : public Scenario {
     nominal.I_cg.setConstant(Ic(2));
     VscmgDeviation<kM, kN> dev;
     const std::string mode = p.get_name("deviation");
+    // Every value drawn from --seed, and what it derives, goes to the run's JSON (issue 15).
+    std::vector<UsedValue> used;
+    const std::string from = "drawn from --seed " + std::to_string(ctx.seed) + ": ";
+    auto record_deviation = [&](const std::string& how) {
+      used.push_back(UsedValue::matrix("dA_cs0", dev.dA_cs0, "-", how));
+      used.push_back(UsedValue::matrix("dA_ct0", dev.dA_ct0, "-", how));
+      used.push_back(UsedValue::matrix("dA_ws", dev.dA_ws, "-", how));
+      used.push_back(UsedValue::matrix("dA_cg", dev.dA_cg, "-", how));
+    };
     if (mode == "random" || (mode == "D1" && ctx.seed != 0)) {  // --seed N > 0 draws Mode A
       Rng rng(ctx.seed);
       const double a = p.get_number("deviation_max");
@@ -191,6 +200,8 @@ class HybridScenario final : public Scenario {
       draw(dev.dA_ct0);
       draw(dev.dA_ws);
       draw(dev.dA_cg);
+      if (mode == "D1") used.push_back(UsedValue::name("deviation", "random", "--seed > 0 draws Mode A (spec A.2.3)"));
+      record_deviation(from + "uniform in +-deviation_max per entry (spec A.2.3 Mode A)");
     } else if (mode == "rigid") {  // Mode B (spec A.2.3): one rotation vector per actuator
       Rng rng(ctx.seed);
       const double a = p.get_number("deviation_rot_max_rad");
@@ -201,6 +212,10 @@ class HybridScenario final : public Scenario {
       for (int j = 0; j < kN; ++j)
         for (int k = 0; k < 3; ++k) phi_w(k, j) = rng.uniform(-a, a);
       dev = rigid_mounting_deviation(nominal, phi_c, phi_w);
+      const std::string per = "uniform in +-deviation_rot_max_rad per component (spec A.2.3 Mode B)";
+      used.push_back(UsedValue::matrix("phi_c_rad", phi_c, "rad", from + "CMG mounting rotation vectors (columns), " + per));
+      used.push_back(UsedValue::matrix("phi_w_rad", phi_w, "rad", from + "wheel mounting rotation vectors (columns), " + per));
+      record_deviation("derived from phi_c_rad, phi_w_rad (rigid_mounting_deviation)");
     } else if (mode == "D1") {
       dev = deviation_set_D1();
     }
@@ -407,6 +422,7 @@ class HybridScenario final : public Scenario {
     if (csv) csv->close();
 
     RunResult r;
+    r.used = std::move(used);
     r.metrics = {{"euler_err_ss_max_rad", e_att_max},
                  {"principal_err_ss_max_rad", e_p_max},
                  {"rate_err_ss_max_rad_s", e_rate_max},

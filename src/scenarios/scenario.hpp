@@ -21,6 +21,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "scenarios/params.hpp"
 
 namespace adcs::sim {
@@ -87,6 +89,23 @@ struct UsedValue {
                           std::string source) {
     UsedValue u{std::move(key), ParamKind::vector, {}, std::move(unit), std::move(source)};
     u.value.vector = std::move(v);
+    return u;
+  }
+  //! Rows of an Eigen matrix (any fixed size).
+  template <class Derived>
+  static UsedValue matrix(std::string key, const Eigen::MatrixBase<Derived>& m, std::string unit,
+                          std::string source) {
+    UsedValue u{std::move(key), ParamKind::matrix, {}, std::move(unit), std::move(source)};
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+      std::vector<double> row;
+      for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(m(i, j));
+      u.value.matrix.push_back(std::move(row));
+    }
+    return u;
+  }
+  static UsedValue name(std::string key, std::string value, std::string source) {
+    UsedValue u{std::move(key), ParamKind::name, {}, "", std::move(source)};
+    u.value.name = std::move(value);
     return u;
   }
 };

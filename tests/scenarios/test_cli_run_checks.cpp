@@ -53,7 +53,7 @@ class CliRunChecks : public adcs::sim::test::CliFixture {
   void SetUp() override {
     make_root("adcs_cli_checks");
     catalog_.scenarios.push_back(&fake_);
-    for (const char* n : {"rigid-rw-mrp-pd", "rigid-rw-torquefree"}) {
+    for (const char* n : {"rigid-rw-mrp-pd", "rigid-rw-torquefree", "hybrid-adaptive", "dragfree-estimators"}) {
       const Scenario* s = find_scenario(n);
       ASSERT_NE(s, nullptr) << n;
       catalog_.scenarios.push_back(s);
@@ -190,6 +190,36 @@ TEST_F(CliRunChecks, RigidRwSeedDrawIsInTheJson) {
             0u)
       << s0;
   EXPECT_EQ(s0.find("declared"), std::string::npos) << s0;
+}
+
+// Issue 15: every --seed draw and what it derives is in the JSON, for the VSCMG deviations and
+// the drag-free noise streams as for the rigid-body initial state.
+TEST_F(CliRunChecks, HybridAndDragFreeSeedDrawsAreInTheJson) {
+  ASSERT_EQ(cli({"run", "hybrid-adaptive", "--seed", "3", "--set", "duration_s=0.01", "--out", dir()}), kExitOk)
+      << err_.str();
+  std::string j = slurp(root_ / "out" / "hybrid-adaptive.json");
+  const std::string mode = param_line(j, "deviation");
+  EXPECT_NE(mode.find(R"("value": "random")"), std::string::npos) << mode;
+  EXPECT_NE(mode.find(R"("declared": "D1")"), std::string::npos) << mode;
+  for (const char* key : {"dA_cs0", "dA_ct0", "dA_ws", "dA_cg"})
+    EXPECT_NE(param_line(j, key).find(R"("source": "drawn from --seed 3: uniform in +-deviation_max)"),
+              std::string::npos)
+        << key << ": " << param_line(j, key);
+  ASSERT_EQ(cli({"run", "hybrid-adaptive", "--seed", "3", "--set", "duration_s=0.01", "--set", "deviation=rigid",
+                 "--out", dir()}),
+            kExitOk)
+      << err_.str();
+  j = slurp(root_ / "out" / "hybrid-adaptive.json");
+  EXPECT_NE(param_line(j, "phi_c_rad").find(R"("unit": "rad", "source": "drawn from --seed 3: )"), std::string::npos)
+      << param_line(j, "phi_c_rad");
+  EXPECT_NE(param_line(j, "dA_ws").find(R"("source": "derived from phi_c_rad, phi_w_rad)"), std::string::npos)
+      << param_line(j, "dA_ws");
+  ASSERT_EQ(cli({"run", "dragfree-estimators", "--seed", "2", "--set", "duration_s=0.5", "--out", dir()}), kExitOk)
+      << err_.str();
+  j = slurp(root_ / "out" / "dragfree-estimators.json");
+  EXPECT_NE(param_line(j, "noise_seed").find(R"("value": 3, "unit": "-", "source": "derived: --seed + 1)"),
+            std::string::npos)
+      << param_line(j, "noise_seed");
 }
 
 TEST_F(CliRunChecks, ProgressGoesToStderrOnlyWhenAsked) {
