@@ -38,7 +38,7 @@ class CubesatPpc final : public Scenario {
     const CubesatManoeuvre c = cubesat_12u_manoeuvre();
     declare_rigid_rw(p, c.defaults);
     p.vector("sigma_RN", c.sigma_RN, "-", std::string("inertial target MRP; ") + c.source);
-    p.number("torque_limit_Nm", c.torque_limit_Nm, "N m", c.source);
+    declare_wheel_limits(p, c.torque_limit_Nm, c.source);
     // The funnel, as a user would choose it (all ours): symmetric (delta = 1, so an error may
     // cross zero, which a rest-to-rest slew's overshoot-free PD-like tail does), wide enough
     // that the 30 deg slew starts inside (the Euler error is (4.6, 17.2, 23.6) deg, z(0) < 0.6),
@@ -113,6 +113,7 @@ class CubesatPpc final : public Scenario {
     ap.torque_limit = p.get_number("torque_limit_Nm");
     const RwTorqueAllocator<kRigidRwWheels> allocator(ap);
     if (allocator.status() != Status::ok) throw ParamError("torque_limit_Nm must be > 0");
+    const ActuatorLimits<0, kRigidRwWheels> limits = wheel_limits(p);
     const Vec3 sigma_RN = p.get_vec<3>("sigma_RN");
     if (!(sigma_RN.norm() <= 1.0)) throw ParamError("sigma_RN must be a short-set MRP (|sigma| <= 1)");
     EulerReferenceSample ref;  // inertial target: constant angles, zero rates
@@ -139,7 +140,7 @@ class CubesatPpc final : public Scenario {
 
     std::vector<double> t_series, err_series, row;
     double torque_max = 0.0, margin_min = INFINITY;
-    long saturated = 0, samples = 0, nonfinite = 0, failed = 0;
+    long saturated = 0, samples = 0, nonfinite = 0, failed = 0, speed_held = 0;
     StatusCounts statuses;
     EulerTrackingCommand cmd;
     EulerTrackingMeasurement m;
@@ -160,6 +161,9 @@ class CubesatPpc final : public Scenario {
       if (usable(s)) margin_min = std::min(margin_min, d.funnel_margin);
       if (!all_finite(cmd.torque_B)) ++nonfinite;
       if (allocator.allocate(cmd.torque_B, u_s) == Status::saturated) ++saturated;
+      LimitReport lr;  // each wheel's speed limit (the torque limit is the allocator's)
+      if (limit_wheel_torques<kRigidRwWheels>(limits, RigidRwPlant::Omega(xs), u_s, &lr) == Status::saturated)
+        speed_held += lr.wheel_speed_held;
       u.head<kRigidRwWheels>() = u_s;
       u.tail<3>() = t >= kick_start && t < kick_end ? kick : Vec3::Zero();
       ++samples;
@@ -209,6 +213,7 @@ class CubesatPpc final : public Scenario {
                  {"funnel_margin_min", std::isfinite(margin_min) ? margin_min : NAN},
                  {"torque_max_Nm", torque_max},
                  {"saturated_fraction", samples ? double(saturated) / double(samples) : 0.0},
+                 {"wheel_speed_held", double(speed_held)},
                  {"rejected_steps", double(failed)},
                  {"nonfinite_commands", double(nonfinite)}};
     statuses.to_metrics(r);

@@ -59,6 +59,20 @@ void declare_rigid_rw(ParamSet& p, const RigidRwDefaults& d) {
   p.number("record_every", 1, "samples", "CSV decimation: one row every N samples (>= 1)");
 }
 
+void declare_wheel_limits(ParamSet& p, double torque_limit_Nm, const std::string& torque_source) {
+  p.number("torque_limit_Nm", torque_limit_Nm, "N m", torque_source);
+  p.number("wheel_speed_limit_rad_s", 628.3, "rad/s",
+           "ours: 6000 rpm, a typical small-satellite wheel; at the limit a wheel is not spun up further");
+}
+
+ActuatorLimits<0, kRigidRwWheels> wheel_limits(const ParamSet& p) {
+  ActuatorLimits<0, kRigidRwWheels> l;
+  l.wheel_torque_max_Nm.setConstant(p.get_number("torque_limit_Nm"));
+  l.wheel_speed_max_rad_s.setConstant(p.get_number("wheel_speed_limit_rad_s"));
+  if (!valid(l)) throw ParamError("torque_limit_Nm and wheel_speed_limit_rad_s must be > 0");
+  return l;
+}
+
 RigidRwPlant::Params rigid_rw_plant_params(const ParamSet& p) {
   RigidRwPlant::Params pp;
   pp.J_B = p.get_mat<3, 3>("J_kgm2");

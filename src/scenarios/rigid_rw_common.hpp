@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "adcs/actuator/limits.hpp"
 #include "adcs/plant/rigid_body_rw.hpp"
 #include "scenarios/scenario.hpp"
 #include "sim/cvode_integrator.hpp"
@@ -44,6 +45,13 @@ CubesatManoeuvre cubesat_12u_manoeuvre();
 //! omega0_BN_B, Omega0_rad_s, omega0_dispersion_rad_s, integrator, rtol, atol, rk4_step_s,
 //! record_every.
 void declare_rigid_rw(ParamSet& p, const RigidRwDefaults& d);
+
+//! Declares the wheel limits of a controlled scenario: torque_limit_Nm (per wheel motor) and
+//! wheel_speed_limit_rad_s (per wheel; the same for every wheel).
+void declare_wheel_limits(ParamSet& p, double torque_limit_Nm, const std::string& torque_source);
+
+//! The declared wheel limits (actuator/limits.hpp); throws ParamError unless both are > 0.
+ActuatorLimits<0, kRigidRwWheels> wheel_limits(const ParamSet& p);
 
 //! Plant parameters from the ParamSet; throws ParamError when they are not physical.
 RigidRwPlant::Params rigid_rw_plant_params(const ParamSet& p);

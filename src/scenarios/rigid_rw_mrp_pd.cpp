@@ -94,7 +94,7 @@ class RigidRwMrpPd final : public Scenario {
     p.vector("sigma_RN", v_.sigma_RN, "-", "inertial target MRP; " + v_.gain_source);
     p.number("K_Nm", v_.K_Nm, "N m", v_.gain_source);
     p.vector("P_Nms", v_.P_Nms, "N m s", "diagonal rate gain; " + v_.gain_source);
-    p.number("torque_limit_Nm", v_.torque_limit_Nm, "N m", v_.limit_source);
+    declare_wheel_limits(p, v_.torque_limit_Nm, v_.limit_source);
     p.number("settle_band_rad", v_.settle_band_rad, "rad", "principal-angle band for settle_s; " + v_.gain_source);
   }
 
@@ -116,6 +116,7 @@ class RigidRwMrpPd final : public Scenario {
     ap.torque_limit = p.get_number("torque_limit_Nm");
     const RwTorqueAllocator<kRigidRwWheels> allocator(ap);
     if (allocator.status() != Status::ok) throw ParamError("torque_limit_Nm must be > 0");
+    const ActuatorLimits<0, kRigidRwWheels> limits = wheel_limits(p);
     AttitudeReference ref;
     ref.sigma_RN = p.get_vec<3>("sigma_RN");
 
@@ -135,7 +136,7 @@ class RigidRwMrpPd final : public Scenario {
 
     std::vector<double> t_series, err_series, row;
     double torque_max = 0.0, wheel_max = 0.0, dH_max = 0.0;
-    long saturated = 0, rejected = 0, samples = 0;
+    long saturated = 0, rejected = 0, samples = 0, speed_held = 0;
     MrpPdCommand cmd;
     Vec<kRigidRwWheels> u_s = Vec<kRigidRwWheels>::Zero();
     SampledDataOptions opt;
@@ -152,6 +153,9 @@ class RigidRwMrpPd final : public Scenario {
       const Status s = allocator.allocate(cmd.L_r_B, u_s);
       if (s == Status::saturated) ++saturated;
       else if (s != Status::ok) ++rejected;
+      LimitReport lr;  // each wheel's speed limit (the torque limit is the allocator's)
+      if (limit_wheel_torques<kRigidRwWheels>(limits, RigidRwPlant::Omega(xs), u_s, &lr) == Status::saturated)
+        speed_held += lr.wheel_speed_held;
       u.head<kRigidRwWheels>() = u_s;
       u.tail<3>().setZero();
       ++samples;
@@ -189,6 +193,7 @@ class RigidRwMrpPd final : public Scenario {
                  {"torque_max_Nm", torque_max},
                  {"wheel_speed_max_rad_s", wheel_max},
                  {"saturated_fraction", samples ? double(saturated) / double(samples) : 0.0},
+                 {"wheel_speed_held", double(speed_held)},
                  {"rejected_steps", double(rejected)},
                  {"momentum_drift_Nms", dH_max},
                  {"momentum_drift_rel", dH_max / H_scale},

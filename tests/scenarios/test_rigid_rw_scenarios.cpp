@@ -125,6 +125,19 @@ TEST(CubesatMrpPd, SlewsSettlesAndHoldsWithinTheWheelLimit) {
   EXPECT_LE(metric(other, "torque_max_Nm"), 3e-3 * (1.0 + 1e-12));
 }
 
+// Per-wheel speed limits (actuator/limits.hpp): the unlimited slew spins a wheel to 162 rad/s;
+// at a 100 rad/s limit the wheels are held there (one period's spin-up at most beyond it: 3 mN m
+// over 2e-5 kg m^2 for 0.1 s = 15 rad/s) and the slew still settles, later.
+TEST(CubesatMrpPd, WheelSpeedLimitIsHeldAndTheSlewStillSettles) {
+  EXPECT_EQ(metric(run("cubesat-mrp-pd"), "wheel_speed_held"), 0.0);
+  const RunResult r = run("cubesat-mrp-pd", {{"wheel_speed_limit_rad_s", "100"}});
+  EXPECT_GT(metric(r, "wheel_speed_held"), 0.0);
+  EXPECT_LE(metric(r, "wheel_speed_max_rad_s"), 100.0 + 15.0);
+  EXPECT_LT(metric(r, "att_err_final_deg"), 0.01);
+  EXPECT_LT(metric(r, "settle_s"), 120.0);
+  EXPECT_THROW(run("cubesat-mrp-pd", {{"wheel_speed_limit_rad_s", "0"}}), adcs::sim::ParamError);
+}
+
 // cubesat-ppc-10hz (issue 15): seed 002's PPC law on the same cubesat at 10 Hz with a funnel and
 // gains chosen for it: stays in its funnel, settles, holds; no tumble.
 TEST(CubesatPpc10Hz, StaysInItsFunnelSettlesAndHolds) {

@@ -4,6 +4,7 @@
 // code, not just declarations. The five units together instantiate every flight template;
 // keep them in step with include/adcs (one block per concept). Split in five so that the two
 // cores share what was one 600-second translation unit.
+#include "adcs/actuator/limits.hpp"
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/actuator/saturation.hpp"
 #include "adcs/actuator/steering.hpp"
@@ -54,6 +55,11 @@ template Status steer_escape<4>(const Mat<3, 4>&, const Vec3&, const EscapeSteer
 template struct VscmgGeometry<4, 0>;
 template Status set_cmg_pyramid<4, 0>(double, double, VscmgGeometry<4, 0>&) noexcept;
 template Status wheel_pyramid_axes<4>(double, Mat<3, 4>&) noexcept;
+template Status limit_wheel_torques<4>(const ActuatorLimits<0, 4>&, const Vec<4>&, Vec<4>&, LimitReport*) noexcept;
+template Status limit_vscmg_command<4, 3>(const ActuatorLimits<4, 3>&, const Vec<3>&, const Vec<3>&, Vec<7>&,
+                                          LimitReport*) noexcept;
+template Status limit_vscmg_command<4, 0>(const ActuatorLimits<4, 0>&, const Vec<0>&, const Vec<0>&, Vec<4>&,
+                                          LimitReport*) noexcept;
 }  // namespace adcs
 
 // A flight-style entry point that exercises the non-template attitude functions.
