@@ -282,7 +282,12 @@ int cmd_run(const Options& o, const Catalog& catalog, std::ostream& out, std::os
     w.key("claim").value(c.claim);
     w.key("paper_value").value(c.paper_value);
     w.key("ours").value(c.ours);
-    w.key("holds").value(c.holds);
+    w.key("paper_verdict");
+    if (c.paper_verdict) w.value(to_string(*c.paper_verdict)); else w.null();
+    w.key("criterion").value(c.criterion);
+    w.key("criterion_holds").value(c.holds);
+    w.key("holds").value(c.holds);  // = criterion_holds (kept for readers of older outputs)
+    if (!c.note.empty()) w.key("note").value(c.note);
     w.end_object();
   }
   w.end_array();

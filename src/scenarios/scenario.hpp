@@ -27,12 +27,34 @@
 
 namespace adcs::sim {
 
-//! One row of the claims table: a paper claim we reproduce ("paper") or a check of ours
-//! ("check"). `holds` is empty when the row is informative only.
+//! How a run compares with a paper's own number or statement (issue 16): judged against the
+//! paper's words, never against a criterion of ours.
+enum class PaperVerdict { reproduced, partly, not_reproduced };
+
+inline const char* to_string(PaperVerdict v) noexcept {
+  switch (v) {
+    case PaperVerdict::reproduced: return "reproduced";
+    case PaperVerdict::partly: return "partly";
+    case PaperVerdict::not_reproduced: return "not reproduced";
+  }
+  return "?";
+}
+
+//! One row of the claims table: a paper claim ("paper") or a check of ours ("check").
+//! Two verdicts, never blurred (issue 16):
+//!  - `paper_verdict` (paper rows): the run against `paper_value`, the paper's own number or
+//!    statement, quoted;
+//!  - `holds` (JSON "criterion_holds"): the run against our documented `criterion` (with its
+//!    source: spec, prototype, physics); for checks `paper_value` is the requirement itself.
+//! Either is empty when the row is informative only. `note` says what a reader must know to
+//! weigh the row, e.g. that a baseline meets the criterion too ("not discriminating").
 struct Claim {
   std::string kind;  // "paper" or "check"
   std::string claim, paper_value, ours;
   std::optional<bool> holds;
+  std::optional<PaperVerdict> paper_verdict = std::nullopt;
+  std::string criterion = {};
+  std::string note = {};
 };
 
 //! One figure tools/plot.py draws from the run's CSV: columns `y` against column `x`.

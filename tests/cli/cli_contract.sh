@@ -90,6 +90,9 @@ for v in p.values():
     assert isinstance(v["source"], str) and v["source"], v
 for c in d["claims"]:
     assert c["kind"] in ("paper", "check") and c["holds"] in (True, False, None), c
+    assert c["criterion_holds"] == c["holds"], c
+    assert c["paper_verdict"] in ("reproduced", "partly", "not reproduced", None), c
+    assert c["kind"] == "paper" or c["paper_verdict"] is None, c
 for q in d["plots"]:
     assert isinstance(q["file"], str) and isinstance(q["y"], list), q
 ' "$dir/$s.json" "$s" || fail "run $s: $s.json does not follow docs/CONTRACTS.md"
