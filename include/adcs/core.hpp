@@ -6,3 +6,4 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"

@@ -176,7 +176,9 @@ DragFreeConfig make_config(const ParamSet& p) {
   d.two_sided_noise = p.get_name("noise_density") == "two_sided";
   if (!(d.h > 0.0) || !(d.m_tm > 0.0) || !(d.m_sc > 0.0) || !(d.accel_max > 0.0))
     throw ParamError("drag-free: h, masses and the accelerometer range must be > 0");
-  if (drag_free_discretize(d, c.model) != Status::ok) throw ParamError("drag-free: ZOH discretisation failed");
+  if (drag_free_discretize(d, c.model) != Status::ok)  // valid(DragFreeParams), then the ZOH
+    throw ParamError("drag-free: plant rejected (SPD inertias, finite stiffness/damping, ASDs >= 0) "
+                     "or ZOH discretisation failed");
   c.noise = drag_free_noise(d);
   c.omega_d = p.get_number("omega_d") * (p.get_name("omega_d_unit") == "Hz" ? 2.0 * kPi : 1.0);
   c.bias = 1e-3 * p.get_number("dist_bias_mN");

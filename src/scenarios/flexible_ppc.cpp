@@ -195,6 +195,8 @@ class FlexibleScenario final : public Scenario {
     rp.amplitude_rad = d2r * p.get_vec<3>("ref_amplitude_deg");
     rp.frequency_rad_s = p.get_number("ref_frequency_rad_s");
     const SinusoidalEulerReference ref(rp);
+    if (ref.status() != Status::ok)
+      throw ParamError("ref_amplitude_deg must be finite and ref_frequency_rad_s finite >= 0");
 
     // --- controller (spec §B.3, Table 2) ---
     const double T = p.get_number("control_period_s");

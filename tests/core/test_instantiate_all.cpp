@@ -114,15 +114,18 @@ namespace {
 using adcs::Status;
 
 // Construction status of the instantiated classes from their default parameters: those whose
-// defaults are a usable configuration report ok, those that need the caller's geometry (wheel
-// axes, inertia) refuse it instead of building a silently wrong object.
+// defaults are a usable configuration report ok, those that need the caller's geometry, model or
+// gains (wheel axes, inertia, filter matrices, K_P, RBF layer) refuse it instead of building a
+// silently wrong object (docs/VALIDATION.md; tests/core/test_parameter_validation.cpp has one
+// test per refusal).
 TEST(InstantiateAll, DefaultParametersGiveTheDocumentedConstructionStatus) {
   EXPECT_EQ(adcs::RwTorqueAllocator<4>(adcs::RwAllocationParams<4>{}).status(), Status::invalid_parameter);
   EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::seed003_quantizer_params()).status(), Status::ok);
   EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::CompositeQuantizerParams<6>{}).status(), Status::ok);
-  EXPECT_EQ(adcs::Pid<1>(adcs::PidParams<1>{}).status(), Status::ok);
-  EXPECT_EQ((adcs::Eskf<27, 9, 9, 9>(adcs::EskfParams<27, 9, 9, 9>{}).status()), Status::ok);
-  EXPECT_EQ((adcs::RbfCompensator<6, 7, 3>(adcs::RbfCompensatorParams<6, 7, 3>{}).status()), Status::ok);
+  EXPECT_EQ(adcs::Pid<1>(adcs::PidParams<1>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ((adcs::Eskf<27, 9, 9, 9>(adcs::EskfParams<27, 9, 9, 9>{}).status()), Status::invalid_parameter);
+  EXPECT_EQ((adcs::RbfCompensator<6, 7, 3>(adcs::RbfCompensatorParams<6, 7, 3>{}).status()),
+            Status::invalid_parameter);
   EXPECT_EQ(adcs::PrescribedPerformance<3>(adcs::PpcParams<3>{}).status(), Status::ok);
   adcs::HybridAdaptive<4, 3>::Params hp;
   hp.nominal = adcs::pyramid_4cmg_3rw_nominal();

@@ -92,10 +92,30 @@ TEST(DragFreeFilters, BadInputLeavesTheEstimatesUntouched) {
 
 // Found by tests/fuzz (fuzz_seed004). A failed innovation factorisation applies nothing, so it
 // reports singular (not usable()), not ill_conditioned (usable(): "a regularised result").
-TEST(DragFreeFilters, FailedInnovationFactorisationIsSingularAndAppliesNothing) {
+//! A 3-state filter with A_d = I, no input, no disturbance, y = r: the model has no default.
+adcs::EskfParams<3, 1, 1, 1> static_model_eskf() {
   adcs::EskfParams<3, 1, 1, 1> p;
+  p.A_d.setIdentity();
+  p.B_d.setZero();
+  p.B_e.setZero();
   p.C_d << 1, 0, 0;
   p.R(0, 0) = 1e-2;
+  return p;
+}
+
+//! The same for Algorithm 2 (A_d = I, no input, y = C X), measurement row C.
+adcs::SaturatedEsfParams static_model_esf(const Eigen::RowVector3d& C) {
+  adcs::SaturatedEsfParams q;
+  q.A_d.setIdentity();
+  q.B_d.setZero();
+  q.C = C;
+  q.D = 0.0;
+  q.R_a = 1.0;
+  return q;
+}
+
+TEST(DragFreeFilters, FailedInnovationFactorisationIsSingularAndAppliesNothing) {
+  const adcs::EskfParams<3, 1, 1, 1> p = static_model_eskf();
   adcs::Eskf<3, 1, 1, 1> f(p);
   ASSERT_EQ(f.set_estimate(Vec3(1, 2, 3), -Mat3::Identity()), Status::ok);  // C P Cᵀ + R < 0
   EXPECT_EQ(f.update(adcs::Vec<1>(0.5)), Status::singular);
@@ -103,9 +123,7 @@ TEST(DragFreeFilters, FailedInnovationFactorisationIsSingularAndAppliesNothing) 
   EXPECT_EQ(f.state(), Vec3(1, 2, 3));
   EXPECT_EQ(f.covariance(), -Mat3::Identity());
 
-  adcs::SaturatedEsfParams q;
-  q.C << 1e10, 0, 0;
-  adcs::SaturatedEsf g(q);
+  adcs::SaturatedEsf g(static_model_esf(Eigen::RowVector3d(1e10, 0, 0)));
   Mat3 P = Mat3::Identity();
   P(0, 0) = 1e300;  // C P Cᵀ = 1e320: the innovation variance is not finite
   ASSERT_EQ(g.set_estimate(Vec3::Zero(), P), Status::ok);
@@ -116,8 +134,7 @@ TEST(DragFreeFilters, FailedInnovationFactorisationIsSingularAndAppliesNothing) 
 // Found by tests/fuzz (fuzz_seed004): a finite covariance near 1e308 overflowed in the PSD
 // projection / symmetrisation that follows the finiteness check, and Inf was committed.
 TEST(DragFreeFilters, CovarianceOverflowInThePsdStepIsRefused) {
-  adcs::SaturatedEsfParams q;  // A_d = I, no noise: the prediction is P itself
-  adcs::SaturatedEsf g(q);
+  adcs::SaturatedEsf g(static_model_esf(Eigen::RowVector3d::Zero()));  // A_d = I, no noise: the prediction is P itself
   const Mat3 Pg = Vec3(1e308, 1e308, 1.0).asDiagonal();  // (P + Pᵀ)/2 overflows on the diagonal
   ASSERT_EQ(g.set_estimate(Vec3::Zero(), Pg), Status::ok);
   EXPECT_EQ(g.predict(0.0), Status::out_of_range);
@@ -131,9 +148,7 @@ TEST(DragFreeFilters, CovarianceOverflowInThePsdStepIsRefused) {
 // keep: either refused (out_of_range, nothing changed) or applied with a finite estimate.
 // It runs in the Release suite and in the ASan+UBSan (clang) suite.
 TEST(DragFreeFilters, IndefiniteHugeCovarianceIsRefusedOrProjectedToFinite) {
-  adcs::EskfParams<3, 1, 1, 1> p;
-  p.C_d << 1, 0, 0;
-  p.R(0, 0) = 1e-2;
+  const adcs::EskfParams<3, 1, 1, 1> p = static_model_eskf();
   for (const double big : {1e300, 1e307, 8e307, 1.7e308}) {
     adcs::Eskf<3, 1, 1, 1> f(p);
     Mat3 P;
@@ -167,6 +182,7 @@ TEST(Pid, OverflowIsRefusedAndTheIntegralKept) {
   EXPECT_EQ(out(0), 0.0);  // the failure command: zero (core/failure_policy.hpp)
   EXPECT_EQ(pid.integral()(0), 0.0);
   adcs::PidParams<1> pi;
+  pi.kp(0) = 0.0;  // integral term alone
   pi.ki(0) = 1e-10;
   pi.period_s = 1.0;
   adcs::Pid<1> integ(pi);

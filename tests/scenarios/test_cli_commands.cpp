@@ -124,7 +124,7 @@ TEST_F(CliTest, RunWritesCsvJsonAndSummaryLine) {
         R"("v": {"value": [3, 4], "unit": "m")",
         R"("method": {"value": "adams", "unit": "", "source": "assumed: test"})",
         R"("bad": null)",
-        R"({"kind": "check", "claim": "c", "paper_value": "1", "ours": "1", "holds": true})",
+        R"({"kind": "check", "claim": "c", "paper_value": "1", "ours": "1", "paper_verdict": null, "criterion": "", "criterion_holds": true, "holds": true})",
         R"({"file": "f.png", "title": "t", "x": "t", "y": ["x"], "ylabel": "m", "logy": true})",
         R"("csv": "fake.csv")"})
     EXPECT_NE(j.find(want), std::string::npos) << want << "\n" << j;

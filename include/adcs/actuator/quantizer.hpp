@@ -169,7 +169,9 @@ class QuantizerChannel {
   Status status_ = Status::ok;
 };
 
-//! Parameters of an M-channel quantizer, channel i in the unit of input i.
+//! Parameters of an M-channel quantizer, channel i in the unit of input i. Default: every
+//! channel the seed 003 torque row (QuantizerChannelParams); seed003_quantizer_params() gives the
+//! paper's torque and force channels.
 template <int M>
 struct CompositeQuantizerParams {
   std::array<QuantizerChannelParams, M> channel{};

@@ -7,14 +7,18 @@
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/pinv.hpp"
 
 namespace adcs {
 
+//! The wheel axes have no default (NaN until set: refused). The limit defaults to the 0.2 N m of
+//! the rigid-rw-mrp-pd foundation vehicle (issue 15's four-wheel case).
 template <int N>
 struct RwAllocationParams {
-  Mat<3, N> G_s_B = Mat<3, N>::Zero();  //!< [-] wheel spin axes (unit columns), B components
-  double torque_limit = 0.2;            //!< [N m] per-wheel motor torque limit (> 0)
+  //! [-] wheel spin axes (unit columns, within 1e-6), B components; must span R^3
+  Mat<3, N> G_s_B = Mat<3, N>::Constant(kUnset);
+  double torque_limit = 0.2;  //!< [N m] per-wheel motor torque limit (finite, > 0)
 };
 
 template <int N>
@@ -24,13 +28,18 @@ class RwTorqueAllocator {
 
   explicit RwTorqueAllocator(const Params& p) noexcept : p_(p) {
     G_pinv_.setZero();
-    const Status s = right_pinv<3, N>(p_.G_s_B, G_pinv_, &info_);
-    status_ = ADCS_CHECK(s == Status::ok && p_.torque_limit > 0.0,
-                         "RwTorqueAllocator: wheel axes must span R^3, torque_limit > 0")
+    // Axes first: the pseudo-inverse of a NaN (unset) geometry is not attempted.
+    const bool axes = unit_columns<3, N>(p_.G_s_B);
+    const Status s = axes ? right_pinv<3, N>(p_.G_s_B, G_pinv_, &info_) : Status::invalid_parameter;
+    status_ = ADCS_CHECK(s == Status::ok && finite_positive(p_.torque_limit),
+                         "RwTorqueAllocator: wheel axes must be unit and span R^3, torque_limit finite > 0")
                   ? Status::ok
                   : Status::invalid_parameter;
   }
 
+  //! ok, or invalid_parameter: G_s_B not finite, a column not unit, or the axes not spanning R^3
+  //! (G_s G_sᵀ singular); torque_limit not finite or not > 0. A refused allocator answers
+  //! invalid_parameter from allocate() and leaves u_s untouched.
   Status status() const noexcept { return status_; }
   //! Conditioning of G_s seen at construction.
   const PinvInfo& geometry() const noexcept { return info_; }

@@ -15,13 +15,17 @@
 
 namespace adcs {
 
+//! Defaults: β and δ of seed 001 §4 (β_Gi = 0.05, δ_Gi = 0.1); α = 1, the bare operator
+//! (HybridAdaptive passes its α_G = 1e3, seed 001 §4).
 struct ProjectionParams {
-  double alpha = 1.0;  //!< [-] adaptation gain α (>= 0); the seed 001 law's α_G
+  double alpha = 1.0;  //!< [-] adaptation gain α (>= 0); 1: Proj(θ, Φ) itself
   double beta = 0.05;  //!< [θ units²] radius² β (> 0) beyond which the correction starts
   double delta = 0.1;  //!< [θ units²] boundary-layer width δ (> 0); invariant set ‖θ‖² ≤ β + δ
 };
 
-//! True when the parameters define a projection (finite, α >= 0, β > 0, δ > 0).
+//! True when the parameters define a projection (finite, α >= 0, β > 0, δ > 0). Checked by
+//! every smooth_projection() call (invalid_parameter, outputs untouched) and by the adaptive laws
+//! at construction.
 inline bool valid(const ProjectionParams& p) noexcept {
   return std::isfinite(p.alpha) && std::isfinite(p.beta) && std::isfinite(p.delta) &&
          p.alpha >= 0.0 && p.beta > 0.0 && p.delta > 0.0;

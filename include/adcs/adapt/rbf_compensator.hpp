@@ -15,9 +15,11 @@
 
 namespace adcs {
 
+//! The gains default to seed 002 Table 2; the layer has no default (RbfLayerParams: refused
+//! until set; seed002_compensator() in control/euler_tracking_common.hpp is the paper's).
 template <int NI, int NH, int NO>
 struct RbfCompensatorParams {
-  RbfLayerParams<NI, NH> layer{};      //!< centres c_j and widths b_j (units of x)
+  RbfLayerParams<NI, NH> layer{};      //!< centres c_j and widths b_j (units of x); no default
   Vec<NO> tau_w = Vec<NO>::Constant(0.5);  //!< [-] τ_wi, seed 002 Table 2
   double tau_mu = 0.5;                 //!< [-] τ_μ, seed 002 Table 2
   double beta = 0.01;                  //!< [-] weight leakage β, seed 002 Table 2
@@ -36,11 +38,12 @@ class RbfCompensator {
   };
 
   explicit RbfCompensator(const Params& p) noexcept : p_(p), layer_(p.layer) {
-    const bool ok = layer_.status() == Status::ok && all_finite(p_.tau_w) && (p_.tau_w.array() >= 0.0).all() &&
-                    std::isfinite(p_.tau_mu) && p_.tau_mu >= 0.0 && std::isfinite(p_.beta) && p_.beta >= 0.0 &&
-                    std::isfinite(p_.gamma) && p_.gamma >= 0.0 && std::isfinite(p_.sigma) && p_.sigma > 0.0;
+    const bool ok = layer_.status() == Status::ok && finite_nonnegative(p_.tau_w) && finite_nonnegative(p_.tau_mu) &&
+                    finite_nonnegative(p_.beta) && finite_nonnegative(p_.gamma) && finite_positive(p_.sigma);
     status_ = ok ? Status::ok : Status::invalid_parameter;
   }
+  //! ok, or invalid_parameter: the layer refused (RbfLayer), τ_w, τ_μ, β or γ not finite or < 0,
+  //! σ not finite or not > 0. A refused compensator evaluates to zero and never adapts.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
 
@@ -51,16 +54,24 @@ class RbfCompensator {
   }
 
   //! D̂ and the robust term for NN input x and sliding variable s (both finite: caller checks).
+  //! Zero when refused (status() != ok): no compensation from invalid gains.
   Output evaluate(const Vec<NI>& x, const Vec<NO>& s) const noexcept {
     Output o;
+    if (status_ != Status::ok) return o;
     o.h = layer_.activations(x);
     o.D_hat = W_.transpose() * o.h;
     o.robust = bound_robust_term(mu_, s, p_.sigma);
     return o;
   }
 
-  //! Next estimates after one period T with s and h held; committed by commit().
+  //! Next estimates after one period T with s and h held; committed by commit(). A refused
+  //! compensator proposes its current (initial) estimates.
   void propose(const Output& o, const Vec<NO>& s, double T, Mat<NH, NO>& W_next, double& mu_next) const noexcept {
+    if (status_ != Status::ok) {
+      W_next = W_;
+      mu_next = mu_;
+      return;
+    }
     W_next = rbf_weight_step<NH, NO>(W_, o.h, s, p_.tau_w, p_.beta, T);   // eq. (13)
     mu_next = bound_estimate_step(mu_, s.norm(), p_.tau_mu, p_.gamma, T);  // eq. (14)
   }

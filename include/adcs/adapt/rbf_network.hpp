@@ -14,13 +14,18 @@
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 
 namespace adcs {
 
+//! No default: centres and widths depend on the input's range (NaN until set, so a forgotten
+//! layer is refused). seed002_rbf_layer() (control/euler_tracking_common.hpp) is seed 002 §4's.
 template <int NI, int NH>
 struct RbfLayerParams {
-  Mat<NI, NH> centers = Mat<NI, NH>::Zero();  //!< c_j (columns), units of the input x
-  Vec<NH> widths = Vec<NH>::Ones();           //!< b_j > 0, units of x
+  //! c_j (columns), units of the input x; finite
+  Mat<NI, NH> centers = Mat<NI, NH>::Constant(kUnset);
+  //! b_j, units of x; finite, > 0
+  Vec<NH> widths = Vec<NH>::Constant(kUnset);
 };
 
 //! Gaussian layer h(x) with fixed centres and widths.
@@ -29,15 +34,18 @@ class RbfLayer {
  public:
   using Params = RbfLayerParams<NI, NH>;
   explicit RbfLayer(const Params& p) noexcept : p_(p) {
-    const bool ok = all_finite(p_.centers) && all_finite(p_.widths) && (p_.widths.array() > 0.0).all();
+    const bool ok = all_finite(p_.centers) && finite_positive(p_.widths);
     status_ = ok ? Status::ok : Status::invalid_parameter;
     for (int j = 0; j < NH; ++j) inv_two_b2_(j) = 1.0 / (2.0 * p_.widths(j) * p_.widths(j));
   }
+  //! ok, or invalid_parameter: a centre not finite, a width not finite or not > 0.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
 
-  //! h_j(x) ∈ (0, 1], = 1 at x = c_j. The caller checks x is finite.
+  //! h_j(x) ∈ (0, 1], = 1 at x = c_j. The caller checks x is finite. A refused layer activates
+  //! nothing (h = 0), so no estimate is built from parameters that were never valid.
   Vec<NH> activations(const Vec<NI>& x) const noexcept {
+    if (status_ != Status::ok) return Vec<NH>::Zero();
     Vec<NH> h;
     for (int j = 0; j < NH; ++j) h(j) = std::exp(-(x - p_.centers.col(j)).squaredNorm() * inv_two_b2_(j));
     return h;

@@ -18,6 +18,7 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/plant/drag_free.hpp"
 
 namespace adcs {
@@ -42,10 +43,19 @@ enum class DragFreeXLaw {
   pid_compensated,  //!< the same PID + (m_sc ĥ_idf,x − F̂_Dsc,x) (Fig. 9 "ADRC")
 };
 
+//! Gains of one nonlinear PID loop (finite, >= 0: the errors carry the sign, e = command − state).
+//! 0 switches a term off; DragFreeAdrcParams sets every loop to its seed 004 §4 value.
 struct NlpidGains {
   double kp = 0.0, ki = 0.0, kd = 0.0;  //!< on fal(e_p), fal(e_i), fal(e_d)
 };
 
+//! True when every gain is finite and >= 0.
+inline bool valid(const NlpidGains& g) noexcept {
+  return finite_nonnegative(g.kp) && finite_nonnegative(g.ki) && finite_nonnegative(g.kd);
+}
+
+//! Every default is seed 004's (§4 gains with k_i halved per spec §B.7 [D], Table 2 plant,
+//! Fig. 9 PID): the paper's configuration, as dragfree-adrc runs it.
 struct DragFreeAdrcParams {
   DragFreeParams plant{};                                //!< masses, inertias, couplings, h
   NlpidGains attitude{0.001, 0.00005, 0.01};             //!< seed 004 §4; k_i halved [D]
@@ -65,13 +75,16 @@ class DragFreeAdrc {
   using Params = DragFreeAdrcParams;
 
   explicit DragFreeAdrc(const Params& p) noexcept : p_(p), pid_x_(pid_params(p)) {
-    const bool ok = std::isfinite(p_.alpha) && p_.alpha > 0.0 && p_.alpha <= 1.0 && std::isfinite(p_.delta) &&
-                    p_.delta > 0.0 && std::isfinite(p_.limit) && p_.limit > 0.0 && p_.plant.h > 0.0 &&
-                    p_.plant.m_tm > 0.0 && p_.plant.m_sc > 0.0 && all_finite(p_.plant.I_tm) &&
-                    all_finite(p_.plant.I_sc) && pid_x_.status() == Status::ok;
+    const bool ok = std::isfinite(p_.alpha) && p_.alpha > 0.0 && p_.alpha <= 1.0 && finite_positive(p_.delta) &&
+                    finite_positive(p_.limit) && valid(p_.plant) && valid(p_.attitude) && valid(p_.drag_free) &&
+                    valid(p_.tm_attitude) && pid_x_.status() == Status::ok;
     status_ = ok ? Status::ok : Status::invalid_parameter;
     reset();
   }
+  //! ok, or invalid_parameter: fal exponent α outside (0, 1]; δ or the limit ρ not finite > 0;
+  //! the plant invalid (valid(DragFreeParams): masses, SPD inertias, h, ...); an NLPID gain not
+  //! finite or < 0; the Fig. 9 PID refused (Pid: gains finite >= 0). A refused controller answers
+  //! invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
 

@@ -13,6 +13,7 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
@@ -66,7 +67,7 @@ inline RbfCompensatorParams<6, 7, 3> seed002_compensator() noexcept {
 struct EulerTrackingGains {
   //! [kg m²] inertia in B⁻¹ = J G and A (the paper uses the true J). No default: NaN until set,
   //! so a forgotten inertia is refused (status() == invalid_parameter), never taken as I.
-  Mat3 J = Mat3::Constant(std::numeric_limits<double>::quiet_NaN());
+  Mat3 J = Mat3::Constant(kUnset);
   Vec3 lambda = Vec3::Constant(0.125);       //!< [1/s] λ, seed 002 Table 2
   Vec3 K = Vec3(0.5, 0.1, 0.5);              //!< [law units] K, seed 002 Table 2
   RbfCompensatorParams<6, 7, 3> compensator = seed002_compensator();  //!< τ_w, τ_μ, β, γ, σ, RBF layer

@@ -15,6 +15,7 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 
 namespace adcs {
 
@@ -39,12 +40,17 @@ class FtsmcSe3 {
 
   FtsmcSe3(const Params& p, const Se3SpacecraftParams& nominal) noexcept
       : p_(p), nominal_(nominal), S_(NonsingularPowerParams{p.p_s, p.eps}) {
-    const bool ok = all_finite(p_.C1) && all_finite(p_.C2) && (p_.K_a.array() >= 0.0).all() &&
-                    (p_.K_b.array() >= 0.0).all() && p_.rho > 0.0 && p_.k_s >= 0.0 && p_.phi > 0.0 &&
-                    nominal_.status() == Status::ok && S_.status() == Status::ok;
+    const bool ok = finite_nonnegative(p_.C1) && finite_nonnegative(p_.C2) && finite_nonnegative(p_.K_a) &&
+                    finite_nonnegative(p_.K_b) && finite_positive(p_.rho) && finite_nonnegative(p_.k_s) &&
+                    finite_positive(p_.phi) && nominal_.status() == Status::ok && S_.status() == Status::ok;
     status_ = ok ? Status::ok : Status::invalid_parameter;
   }
 
+  //! ok, or invalid_parameter: S's p_s outside (0, 1) or ε not finite > 0 (NonsingularPower);
+  //! C1, C2, K_a, K_b, k_s not finite or < 0 (the surface s = 0 and the reaching law are stable
+  //! only for non-negative gains); ρ or φ not finite > 0; the nominal model refused
+  //! (Se3Spacecraft). A refused law answers invalid_parameter from every step() with its
+  //! failure command.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
   void reset() noexcept { u_.setZero(); }

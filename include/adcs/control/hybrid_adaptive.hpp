@@ -19,6 +19,7 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/lyapunov.hpp"
 #include "adcs/math/mrp.hpp"
 #include "adcs/math/place.hpp"
@@ -36,9 +37,12 @@ inline AxisPoles<3> seed001_axis_poles() noexcept {
                        {{{-0.2 * r2, 0.0}, {-0.3 * r2, 0.0}}}}};
 }
 
+//! Defaults: seed 001 §4 (poles, Q_L, α, β, δ), spec §A.3/§A.5 (H_I^n = 0, T_c = 1 ms), ours
+//! (max_step_gain, docs/DECISIONS.md). The nominal geometry has no default (VscmgGeometry is NaN
+//! until set, e.g. pyramid_4cmg_3rw_nominal()): a default set is refused.
 template <int M, int N>
 struct HybridAdaptiveParams {
-  VscmgGeometry<M, N> nominal;             //!< nominal geometry: all the controller knows
+  VscmgGeometry<M, N> nominal;             //!< nominal geometry: all the controller knows (no default)
   AxisPoles<3> poles = seed001_axis_poles();  //!< eig(A_1), one pair per axis (seed 001 §4)
   Mat6 Q_L = Mat6::Identity();             //!< [-] Lyapunov weight (seed 001 §4: Q = I_6)
   double alpha_F = 1.0e7;                  //!< [-] momentum adaptation gain (seed 001 §4)
@@ -92,7 +96,13 @@ class HybridAdaptive {
   using Diagnostics = HybridAdaptiveDiagnostics<M, N>;
 
   explicit HybridAdaptive(const Params& p) noexcept : p_(p) {
-    bool ok = place_double_integrator<3>(p_.poles, K_) == Status::ok;
+    // Hurwitz poles: s² + k_d s + k_p has both roots in the open left half-plane iff k_p, k_d > 0.
+    bool ok = place_double_integrator<3>(p_.poles, K_) == Status::ok &&
+              (K_.template leftCols<3>().diagonal().array() > 0.0).all() &&
+              (K_.template rightCols<3>().diagonal().array() > 0.0).all();
+    // Q_L SPD with a Hurwitz A_1 makes P SPD (seed 001 §3: A_1ᵀP + PA_1 = −Q_L).
+    ok = ok && symmetric_positive_definite<6>(p_.Q_L) && valid(p_.nominal) &&
+         valid(p_.steering);
     const Mat6 A1 = double_integrator_closed_loop<3>(K_);
     ok = ok && solve_continuous_lyapunov<6>(A1, p_.Q_L, P_) == Status::ok;
     B0tP_ = P_.template bottomRows<3>();  // B0ᵀP with B0 = [0; I3]
@@ -102,17 +112,21 @@ class HybridAdaptive {
     ok = ok && llt.info() == Eigen::Success;
     J_n_inv_ = llt.solve(Mat3::Identity());
     proj_ = ProjectionParams{p_.alpha_G, p_.beta_G, p_.delta_G};
-    ok = ok && valid(proj_) && std::isfinite(p_.alpha_F) && p_.alpha_F >= 0.0 &&
-         p_.control_period_s > 0.0 && all_finite(p_.H_I_n) && all_finite(J_n_inv_) &&
-         std::isfinite(p_.max_step_gain) && p_.max_step_gain > 0.0;
-    status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles, Q_L, J_n, alpha, "
-                             "beta, delta, period)")
+    ok = ok && valid(proj_) && finite_nonnegative(p_.alpha_F) && finite_positive(p_.control_period_s) &&
+         all_finite(p_.H_I_n) && all_finite(J_n_inv_) && finite_positive(p_.max_step_gain);
+    status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles, Q_L, nominal geometry, "
+                             "steering, alpha, beta, delta, period)")
                   ? Status::ok
                   : Status::invalid_parameter;
     reset();
   }
 
-  //! Construction outcome (invalid_parameter makes every step() return it).
+  //! Construction outcome: ok, or invalid_parameter when the poles are not finite, conjugate
+  //! pairs in the open left half-plane; Q_L is not symmetric positive definite; the nominal
+  //! geometry is invalid (VscmgGeometry: finite, J_s SPD, inertias and h_cw >= 0; it has no
+  //! default) or J_n = J_tr(0) not SPD; the steering parameters are invalid; α_F < 0, α_G < 0,
+  //! β_G <= 0, δ_G <= 0, T_c <= 0, λ_max <= 0 or any of them or H_I_n not finite. A refused law
+  //! answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
 
   //! Estimates to their initial values Θ̂(0) = 0 (spec §A.5), counters and command to zero.

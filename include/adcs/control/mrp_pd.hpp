@@ -6,13 +6,10 @@
 // (Schaub & Junkins, "Analytical Mechanics of Space Systems", eq. (8.106)-(8.110)); globally
 // asymptotically stable for K > 0, P > 0 with unsaturated torques. The output is the body torque
 // request L_r_B; RwTorqueAllocator maps it to wheel torques.
-#include <limits>
-
-#include <Eigen/Cholesky>
-
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/mrp.hpp"
 
 namespace adcs {
@@ -21,11 +18,11 @@ namespace adcs {
 //! refuses the set (status() == invalid_parameter) instead of running with made-up values.
 template <int N>
 struct MrpPdParams {
-  double K = std::numeric_limits<double>::quiet_NaN();                        //!< [N m] attitude gain on sigma_BR, > 0
-  Mat3 P = Mat3::Constant(std::numeric_limits<double>::quiet_NaN());          //!< [N m s] rate gain on omega_BR_B, SPD
-  Mat3 J_rw_B = Mat3::Constant(std::numeric_limits<double>::quiet_NaN());     //!< [kg m^2] J - sum J_s g g^T, B components, SPD
-  Mat<3, N> G_s_B = Mat<3, N>::Constant(std::numeric_limits<double>::quiet_NaN());  //!< [-] wheel spin axes (unit), B components
-  Vec<N> J_s = Vec<N>::Constant(std::numeric_limits<double>::quiet_NaN());    //!< [kg m^2] wheel spin inertias, >= 0
+  double K = kUnset;                                //!< [N m] attitude gain on sigma_BR, > 0
+  Mat3 P = Mat3::Constant(kUnset);                  //!< [N m s] rate gain on omega_BR_B, SPD
+  Mat3 J_rw_B = Mat3::Constant(kUnset);             //!< [kg m^2] J - sum J_s g g^T, B components, SPD
+  Mat<3, N> G_s_B = Mat<3, N>::Constant(kUnset);    //!< [-] wheel spin axes (unit), B components
+  Vec<N> J_s = Vec<N>::Constant(kUnset);            //!< [kg m^2] wheel spin inertias, >= 0
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
 };
 
@@ -65,13 +62,9 @@ class MrpPd {
   const Params& params() const noexcept { return p_; }
 
   static Status validate(const Params& p) noexcept {
-    auto spd = [](const Mat3& A) {
-      return all_finite(A) && (A - A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * A.cwiseAbs().maxCoeff() &&
-             Eigen::LLT<Mat3>(A).info() == Eigen::Success;
-    };
-    const bool ok = std::isfinite(p.K) && p.K > 0.0 && spd(p.P) && spd(p.J_rw_B) && all_finite(p.G_s_B) &&
-                    ((p.G_s_B.colwise().norm().array() - 1.0).abs() <= 1e-6).all() && all_finite(p.J_s) &&
-                    (p.J_s.array() >= 0.0).all();
+    const bool ok = finite_positive(p.K) && symmetric_positive_definite<3>(p.P) &&
+                    symmetric_positive_definite<3>(p.J_rw_B) && unit_columns<3, N>(p.G_s_B) &&
+                    finite_nonnegative(p.J_s);
     return ok ? Status::ok : Status::invalid_parameter;
   }
 

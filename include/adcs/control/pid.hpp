@@ -7,15 +7,19 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 
 namespace adcs {
 
+//! Gains are finite and >= 0: the errors carry the sign (e = command − state), so a negative gain
+//! would be positive feedback. K_P has no default (NaN until set: refused); K_I = K_D = 0 switch
+//! their terms off (seed 004 Fig. 9's PID runs with K_I = 0); h = 0.1 s is seed 004 §4's period.
 template <int N>
 struct PidParams {
-  Vec<N> kp = Vec<N>::Zero();  //!< proportional gains
-  Vec<N> ki = Vec<N>::Zero();  //!< integral gains (per unit·s)
-  Vec<N> kd = Vec<N>::Zero();  //!< derivative gains
-  double period_s = 0.1;       //!< [s] h, the integration step of e_i
+  Vec<N> kp = Vec<N>::Constant(kUnset);  //!< proportional gains, no default
+  Vec<N> ki = Vec<N>::Zero();  //!< integral gains (per unit·s); 0: no integral term
+  Vec<N> kd = Vec<N>::Zero();  //!< derivative gains; 0: no derivative term
+  double period_s = 0.1;       //!< [s] h, the integration step of e_i (seed 004 §4)
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed sample: out = 0, or hold
 };
 
@@ -23,10 +27,12 @@ template <int N>
 class Pid {
  public:
   explicit Pid(const PidParams<N>& p) noexcept : p_(p) {
-    const bool ok = all_finite(p_.kp) && all_finite(p_.ki) && all_finite(p_.kd) && std::isfinite(p_.period_s) &&
-                    p_.period_s > 0.0;
+    const bool ok = finite_nonnegative(p_.kp) && finite_nonnegative(p_.ki) && finite_nonnegative(p_.kd) &&
+                    finite_positive(p_.period_s);
     status_ = ok ? Status::ok : Status::invalid_parameter;
   }
+  //! ok, or invalid_parameter: a gain not finite or < 0 (K_P unset), h not finite or not > 0.
+  //! A refused PID answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
   void reset() noexcept {
     e_i_.setZero();

@@ -24,6 +24,7 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 
 namespace adcs {
 
@@ -70,16 +71,23 @@ class PrescribedTimeSe3 {
 
   PrescribedTimeSe3(const Params& p, const Se3SpacecraftParams& nominal) noexcept
       : p_(p), nominal_(nominal), S1_(NonsingularPowerParams{p.p, p.eps1}), S2_(NonsingularPowerParams{p.p, p.eps2}) {
-    const bool ok = p_.p > 0.0 && p_.p < 1.0 && p_.T > 0.0 && p_.h > 0.0 && p_.a > 0.0 && p_.eps_q > 0.0 &&
-                    p_.gamma >= 0.0 && p_.sigma1 >= 0.0 && p_.sigma2 >= 0.0 && p_.psi_hat0 >= 0.0 &&
-                    (p_.K2.array() >= 0.0).all() && (p_.K3.array() >= 0.0).all() && (p_.zeta.array() >= 0.0).all() &&
-                    all_finite(p_.Lambda) && all_finite(p_.Upsilon) && all_finite(p_.Lambda2) &&
-                    all_finite(p_.Upsilon2) && std::isfinite(p_.T) && nominal_.status() == Status::ok &&
-                    S1_.status() == Status::ok && S2_.status() == Status::ok;
+    // p ∈ (0, 1) and ε1, ε2 are checked by S1_, S2_ (NonsingularPower).
+    const bool ok = finite_positive(p_.T) && finite_positive(p_.h) && finite_positive(p_.a) &&
+                    finite_positive(p_.eps_q) && finite_nonnegative(p_.gamma) && finite_nonnegative(p_.sigma1) &&
+                    finite_nonnegative(p_.sigma2) && finite_nonnegative(p_.psi_hat0) && finite_nonnegative(p_.K2) &&
+                    finite_nonnegative(p_.K3) && finite_nonnegative(p_.zeta) && finite_nonnegative(p_.Lambda) &&
+                    finite_nonnegative(p_.Upsilon) && finite_nonnegative(p_.Lambda2) &&
+                    finite_nonnegative(p_.Upsilon2) && nominal_.status() == Status::ok && S1_.status() == Status::ok &&
+                    S2_.status() == Status::ok;
     status_ = ok ? Status::ok : Status::invalid_parameter;
     reset();
   }
 
+  //! ok, or invalid_parameter: p outside (0, 1) or ε1, ε2 not finite > 0 (NonsingularPower); T,
+  //! h, a, ε_q not finite > 0; a gain (K2, Λ, Υ, K3, Λ', Υ', ζ), γ, σ1, σ2 or ψ̂(0) not finite
+  //! or < 0 (ψ̂ estimates a squared bound; negative gains destabilise the backstepping); the
+  //! nominal model refused (Se3Spacecraft). A refused law answers invalid_parameter from every
+  //! step() with its failure command.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
   void reset() noexcept {

@@ -26,9 +26,17 @@ inline DragFreeEskfBase::Partition drag_free_attitude_partition() noexcept {
   return part;
 }
 
+//! Parameters: EskfParams<27, 9, 9, 9> (the model matrices and R have no default; X̂_0, P_0 are
+//! spec §B.4's), usually from drag_free_discretize() as the dragfree-* scenarios build them.
 class DragFreeEskf : public DragFreeEskfBase {
  public:
   explicit DragFreeEskf(const Params& p) noexcept : DragFreeEskfBase(p, drag_free_attitude_partition()) {}
+
+  //! ok, or invalid_parameter: an unset (NaN) or invalid matrix, or parameters that couple the
+  //! attitude and translation blocks (PartitionedEskf::status). A refused filter answers
+  //! invalid_parameter from predict() and update() and leaves its estimate untouched;
+  //! fuse_axis() refuses it too.
+  Status status() const noexcept { return DragFreeEskfBase::status(); }
 };
 
 }  // namespace adcs

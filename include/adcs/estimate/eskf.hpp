@@ -22,21 +22,25 @@
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/estimate/extended_state_covariance.hpp"
 
 namespace adcs {
 
+//! The model (A_d, B_d, B_e, C_d) and R have no default: NaN until set, so a forgotten matrix is
+//! refused (status() == invalid_parameter). q = 0 and S = 0 are real choices (no increment bound,
+//! no input noise: spec §B.8's T_Dtm channel has q = 0); X̂_0, P_0 and θ are spec §B.4's.
 template <int N, int NU, int NL, int NY>
 struct EskfParams {
-  Mat<N, N> A_d = Mat<N, N>::Identity();  //!< discrete state matrix (ZOH)
-  Mat<N, NU> B_d = Mat<N, NU>::Zero();    //!< discrete input matrix (ZOH)
-  Mat<N, NL> B_e = Mat<N, NL>::Zero();    //!< disturbance-increment selector
-  Mat<NY, N> C_d = Mat<NY, N>::Zero();    //!< measurement matrix
+  Mat<N, N> A_d = Mat<N, N>::Constant(kUnset);    //!< discrete state matrix (ZOH), no default
+  Mat<N, NU> B_d = Mat<N, NU>::Constant(kUnset);  //!< discrete input matrix (ZOH), no default
+  Mat<N, NL> B_e = Mat<N, NL>::Constant(kUnset);  //!< disturbance-increment selector, no default
+  Mat<NY, N> C_d = Mat<NY, N>::Constant(kUnset);  //!< measurement matrix, no default
   Vec<NL> q = Vec<NL>::Zero();            //!< bounds on E[G_i²] (spec §B.8: (max|ḟ_i| h)²), >= 0
-  Mat<NU, NU> S = Mat<NU, NU>::Zero();    //!< input-noise covariance S_k (SPD or PSD)
-  Mat<NY, NY> R = Mat<NY, NY>::Identity();  //!< sensor-noise covariance R_k (SPD)
+  Mat<NU, NU> S = Mat<NU, NU>::Zero();    //!< input-noise covariance S_k (symmetric PSD)
+  Mat<NY, NY> R = Mat<NY, NY>::Constant(kUnset);  //!< sensor-noise covariance R_k (SPD), no default
   Vec<N> x0 = Vec<N>::Zero();             //!< X̂_0 (spec §B.4: 0)
-  Mat<N, N> P0 = 0.01 * Mat<N, N>::Identity();  //!< P_0 (spec §B.4: 0.01 I)
+  Mat<N, N> P0 = 0.01 * Mat<N, N>::Identity();  //!< P_0 (spec §B.4: 0.01 I), symmetric PSD, tr > 0
   ThetaPolicy theta_policy = ThetaPolicy::trace_optimal;  //!< spec §B.4 [D]
 };
 
@@ -53,11 +57,10 @@ class Eskf {
     Q1_ = 0.5 * (Q1_ + Q1_.transpose()).eval();  // bit-symmetric, so the prediction is too
     Q2_ = 0.5 * (Q2_ + Q2_.transpose()).eval();
     sqrt_q_ = p_.q.cwiseMax(0.0).cwiseSqrt();
-    const Eigen::LLT<Mat<NY, NY>> llt(p_.R);
     const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C_d) &&
-                    all_finite(p_.q) && (p_.q.array() >= 0.0).all() && all_finite(p_.S) && all_finite(p_.R) &&
-                    llt.info() == Eigen::Success && all_finite(p_.x0) && all_finite(p_.P0) &&
-                    p_.P0.trace() > 0.0;
+                    finite_nonnegative(p_.q) && symmetric_positive_semidefinite<NU>(p_.S) &&
+                    symmetric_positive_definite<NY>(p_.R) && all_finite(p_.x0) &&
+                    symmetric_positive_semidefinite<N>(p_.P0) && p_.P0.trace() > 0.0;
     status_ = ok ? Status::ok : Status::invalid_parameter;
     theta_fixed_ = p_.P0.trace() > 0.0 ? std::sqrt(Q1_.trace() / p_.P0.trace()) : 0.0;  // θ* (literal)
     A_nz_.assign(p_.A_d);
@@ -65,6 +68,10 @@ class Eskf {
     reset();
   }
 
+  //! ok, or invalid_parameter: A_d, B_d, B_e, C_d or X̂_0 not finite (unset); q not finite or
+  //! < 0; S not symmetric PSD; R not symmetric positive definite (the innovation covariance must be
+  //! invertible for any P); P_0 not symmetric PSD or tr P_0 = 0 (θ* divides by it). A refused
+  //! filter answers invalid_parameter from predict() and update() with its estimate untouched.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
 

@@ -36,10 +36,13 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
 }
 
 //! Algorithm 3 for one axis: both filters leave with the fused estimate. non_finite_input
-//! (nothing changed) if either filter holds a non-finite estimate, invalid_parameter for a bad axis.
+//! (nothing changed) if either filter holds a non-finite estimate, invalid_parameter (nothing
+//! changed) for a bad axis or a refused filter (status() != ok: it has no valid estimate to give
+//! or to receive).
 [[nodiscard]] inline Status fuse_axis(DragFreeEskf& alg1, SaturatedEsf& alg2, int axis,
                                       FusedCovariance mode = FusedCovariance::block_diagonal) noexcept {
-  if (axis < 0 || axis > 2) return Status::invalid_parameter;
+  if (axis < 0 || axis > 2 || alg1.status() != Status::ok || alg2.status() != Status::ok)
+    return Status::invalid_parameter;
   const std::array<int, 3> idx{DragFreeIndex::r + axis, DragFreeIndex::r_dot + axis, DragFreeIndex::F_Dsc + axis};
   const Vec<27>& x1 = alg1.state();
   const Vec3 X1(x1(idx[0]), x1(idx[1]), x1(idx[2]));         // (35)

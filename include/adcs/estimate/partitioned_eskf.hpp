@@ -48,6 +48,10 @@ class PartitionedEskf {
     assemble_state();
   }
 
+  //! ok, or invalid_parameter: the partition lists repeated or out-of-range indices, a nonzero
+  //! entry (NaN included: an unset matrix) couples the blocks, or a block refuses its parameters
+  //! (Eskf::status: finite model, q >= 0, S PSD, R SPD, P_0 PSD with tr > 0). A refused filter
+  //! answers invalid_parameter from predict() and update() with its estimate untouched.
   Status status() const noexcept { return status_; }
 
   void reset() noexcept {

@@ -14,6 +14,7 @@
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/estimate/extended_state_covariance.hpp"
 #include "adcs/math/truncated_normal.hpp"
 
@@ -25,19 +26,23 @@ enum class SaturationUpdate {
   skip,       //!< no measurement update when saturated (L3 of spec §B.9-1)
 };
 
+//! The axis model (A_d, B_d, C, D) and R_a have no default: NaN until set (drag_free_axis_model()
+//! gives seed 004's), so a forgotten one is refused. B_e = [0; 0; 1] is the structure of the
+//! state [r; ṙ; f] (eq. (12)); q = 0, S = 0 (no increment bound, no input noise) and the
+//! unbounded range are real choices; X̂_0, P_0 are spec §B.5's.
 struct SaturatedEsfParams {
-  Mat3 A_d = Mat3::Identity();                        //!< discrete state matrix (ZOH)
-  Vec3 B_d = Vec3::Zero();                            //!< discrete input column
-  Vec3 B_e = Vec3(0.0, 0.0, 1.0);                     //!< disturbance-increment selector
-  Eigen::RowVector3d C = Eigen::RowVector3d::Zero();  //!< measurement row (11)
-  double D = 0.0;                                     //!< direct input feedthrough (11)
+  Mat3 A_d = Mat3::Constant(kUnset);                  //!< discrete state matrix (ZOH), no default
+  Vec3 B_d = Vec3::Constant(kUnset);                  //!< discrete input column, no default
+  Vec3 B_e = Vec3(0.0, 0.0, 1.0);                     //!< disturbance-increment selector (eq. (12))
+  Eigen::RowVector3d C = Eigen::RowVector3d::Constant(kUnset);  //!< measurement row (11), no default
+  double D = kUnset;                                  //!< direct input feedthrough (11), no default
   double q = 0.0;                                     //!< bound on E[G²] (>= 0)
   double S = 0.0;                                     //!< input-noise variance (>= 0)
-  double R_a = 1.0;                                   //!< accelerometer noise variance (> 0)
+  double R_a = kUnset;                                //!< accelerometer noise variance (> 0), no default
   double y_min = -INFINITY;                           //!< range y̲ (< y_max; −inf: no lower bound)
   double y_max = INFINITY;                            //!< range ȳ
   Vec3 x0 = Vec3::Zero();                             //!< X̂_0 (spec §B.5: 0)
-  Mat3 P0 = 0.01 * Mat3::Identity();                  //!< P_0 (spec §B.5: 0.01 I)
+  Mat3 P0 = 0.01 * Mat3::Identity();                  //!< P_0 (spec §B.5: 0.01 I), symmetric PSD, tr > 0
   ThetaPolicy theta_policy = ThetaPolicy::trace_optimal;
   SaturationUpdate saturation = SaturationUpdate::truncated;
 };
@@ -50,14 +55,17 @@ class SaturatedEsf {
     Q1_ = 4.0 * p_.q * p_.B_e * p_.B_e.transpose();  // (18), l = 1
     Q2_ = p_.S * p_.B_d * p_.B_d.transpose();        // (19)
     const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C) &&
-                    std::isfinite(p_.D) && std::isfinite(p_.q) && p_.q >= 0.0 && std::isfinite(p_.S) &&
-                    p_.S >= 0.0 && std::isfinite(p_.R_a) && p_.R_a > 0.0 && p_.y_min < p_.y_max &&
-                    !std::isnan(p_.y_min) && !std::isnan(p_.y_max) && all_finite(p_.x0) &&
-                    all_finite(p_.P0) && p_.P0.trace() > 0.0;
+                    std::isfinite(p_.D) && finite_nonnegative(p_.q) && finite_nonnegative(p_.S) &&
+                    finite_positive(p_.R_a) && p_.y_min < p_.y_max && all_finite(p_.x0) &&
+                    symmetric_positive_semidefinite<3>(p_.P0) && p_.P0.trace() > 0.0;
     status_ = ok ? Status::ok : Status::invalid_parameter;
     theta_fixed_ = std::sqrt(Q1_.trace() / p_.P0.trace());
     reset();
   }
+  //! ok, or invalid_parameter: A_d, B_d, B_e, C, D or X̂_0 not finite (unset); q or S not finite
+  //! or < 0; R_a not finite > 0; not y_min < y_max (NaN fails; ±inf: no bound); P_0 not
+  //! symmetric PSD or tr P_0 = 0. A refused filter answers invalid_parameter from predict() and
+  //! update() with its estimate untouched; fuse_axis() refuses it too.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
 

@@ -19,6 +19,7 @@
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/expm.hpp"
 
 namespace adcs {
@@ -54,6 +55,20 @@ struct DragFreeParams {
   double asd_acc = 1e-12;   //!< [m s⁻²/√Hz] accelerometer
   bool two_sided_noise = false;  //!< spec §B.3 option: σ² = ASD²/h instead of ASD²/(2h)
 };
+
+//! True when the parameters define the model: masses finite > 0; I_tm, I_sc symmetric positive
+//! definite; K_trans, D_trans, K_rot, D_rot finite (any sign: the printed "+" on K_rot, D_rot is a
+//! negative electrostatic stiffness, spec B.10 #13); h finite > 0; accel_min < accel_max, both
+//! finite; noise densities finite >= 0. drag_free_discretize, drag_free_axis_model and
+//! DragFreeAdrc refuse (invalid_parameter) anything else.
+inline bool valid(const DragFreeParams& p) noexcept {
+  return finite_positive(p.m_tm) && finite_positive(p.m_sc) && symmetric_positive_definite<3>(p.I_tm) &&
+         symmetric_positive_definite<3>(p.I_sc) && all_finite(p.K_trans) && all_finite(p.D_trans) &&
+         all_finite(p.K_rot) && all_finite(p.D_rot) && finite_positive(p.h) && std::isfinite(p.accel_min) &&
+         std::isfinite(p.accel_max) && p.accel_min < p.accel_max && finite_nonnegative(p.asd_T_sc) &&
+         finite_nonnegative(p.asd_F_sc) && finite_nonnegative(p.asd_T_tm) && finite_nonnegative(p.asd_pos) &&
+         finite_nonnegative(p.asd_acc);
+}
 
 //! σ of a ZOH white sequence whose low-frequency one-sided PSD is asd²: σ² = asd²/(2h)
 //! (spec §B.3); the two-sided reading gives σ² = asd²/h.
@@ -116,8 +131,9 @@ struct DragFreeDiscrete {
   Mat<9, 27> C_d = Mat<9, 27>::Zero();
 };
 
+//! invalid_parameter (out untouched) unless valid(p).
 [[nodiscard]] inline Status drag_free_discretize(const DragFreeParams& p, DragFreeDiscrete& out) noexcept {
-  if (!(p.h > 0.0) || !std::isfinite(p.h)) return Status::invalid_parameter;
+  if (!valid(p)) return Status::invalid_parameter;
   const DragFreeContinuous c = drag_free_continuous(p);
   DragFreeDiscrete d;
   const Status s = zoh_discretize<27, 9>(c.A, c.B, p.h, d.A_d, d.B_d);
@@ -138,8 +154,9 @@ struct DragFreeAxisModel {
   double D = 0.0;                                     //!< [1/kg] 1/m_sc
 };
 
+//! invalid_parameter (out untouched) for an axis outside 0..2 or unless valid(p).
 [[nodiscard]] inline Status drag_free_axis_model(const DragFreeParams& p, int axis, DragFreeAxisModel& out) noexcept {
-  if (axis < 0 || axis > 2 || !(p.h > 0.0)) return Status::invalid_parameter;
+  if (axis < 0 || axis > 2 || !valid(p)) return Status::invalid_parameter;
   const double K = p.K_trans(axis, axis), D = p.D_trans(axis, axis);
   Mat3 A = Mat3::Zero();  // (12): [[A_o, B_o],[0, 0]]
   A(0, 1) = 1.0;

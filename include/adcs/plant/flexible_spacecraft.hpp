@@ -25,19 +25,32 @@
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/euler.hpp"
 #include "adcs/math/so3.hpp"
 
 namespace adcs {
 
-//! Parameters of a hub with P appendages of NM modes each (seed 002 Table 1 for P = 2, NM = 4).
+namespace detail {
+//! P copies of a fixed-size Eigen object filled with kUnset ("no default: set it").
+template <class T, int P>
+std::array<T, P> unset_array() noexcept {
+  std::array<T, P> a;
+  for (auto& x : a) x.setConstant(kUnset);
+  return a;
+}
+}  // namespace detail
+
+//! Parameters of a hub with P appendages of NM modes each (seed 002 Table 1 for P = 2, NM = 4:
+//! flexible_params_seed002()). No field has a default: NaN until set, so a forgotten one is
+//! refused (an Eigen member of a std::array would otherwise be left uninitialised).
 template <int P, int NM>
 struct FlexibleSpacecraftParams {
   static_assert(P >= 1 && NM >= 1, "FlexibleSpacecraftParams: need P >= 1 panels, NM >= 1 modes");
-  Mat3 J = Mat3::Identity();                                  //!< [kg m²] total inertia incl. panels
-  std::array<Mat<3, NM>, P> F_s{};                            //!< [kg^½ m] rotation/mode coupling F_sl
-  std::array<Vec<NM>, P> Omega{};                             //!< [rad/s] natural frequencies (diag Ω_l)
-  std::array<Vec<NM>, P> xi{};                                //!< [-] modal damping ratios (diag ξ_l)
+  Mat3 J = Mat3::Constant(kUnset);  //!< [kg m²] total inertia incl. panels
+  std::array<Mat<3, NM>, P> F_s = detail::unset_array<Mat<3, NM>, P>();  //!< [kg^½ m] rotation/mode coupling F_sl
+  std::array<Vec<NM>, P> Omega = detail::unset_array<Vec<NM>, P>();      //!< [rad/s] natural frequencies (diag Ω_l)
+  std::array<Vec<NM>, P> xi = detail::unset_array<Vec<NM>, P>();         //!< [-] modal damping ratios (diag ξ_l)
 };
 
 //! ϑ̈ = A + B u + D̄ in closed form at one (ϑ, ω) (spec §B.2), shared by plant tests and
@@ -117,6 +130,9 @@ class FlexibleSpacecraft {
     M_eff_inv_ = llt_M.solve(Mat3::Identity());
   }
 
+  //! ok, or invalid_parameter: J not finite, not symmetric or not positive definite; an F_sl
+  //! not finite; M_eff = J − Σ F_sl F_slᵀ not positive definite; an Ω not finite > 0 or a ξ not
+  //! finite >= 0. A refused plant has no dynamics: derivative() gives xdot = 0.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
   const Mat3& M_eff() const noexcept { return M_eff_; }
@@ -132,6 +148,10 @@ class FlexibleSpacecraft {
   //! x_dot = f(x, torque_B) by the explicit form above. At gimbal lock (|θ| → 90°) ϑ̇ is not
   //! defined: the derivative is NaN there and the integrator reports it (spec §B.2: |θ| < 89°).
   void derivative(double /*t*/, const State& x, const Input& torque_B, State& xdot) const noexcept {
+    if (status_ != Status::ok) {  // no valid model: a finite, frozen state instead of NaN
+      xdot.setZero();
+      return;
+    }
     const Vec3 w = omega_BN_B(x);
     Vec3 rhs = torque_B - w.cross(p_.J * w);
     for (int l = 0; l < P; ++l) {

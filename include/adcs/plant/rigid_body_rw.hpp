@@ -17,15 +17,18 @@
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/mrp.hpp"
 
 namespace adcs {
 
+//! No field has a default: a forgotten inertia or wheel axis is NaN and the plant refuses the set
+//! (status() == invalid_parameter).
 template <int N>
 struct RigidBodyRwParams {
-  Mat3 J_B = Mat3::Identity();        //!< [kg m^2] total inertia incl. wheels, B components
-  Mat<3, N> G_s_B = Mat<3, N>::Zero();  //!< [-] wheel spin axes g_i (unit columns), B components
-  Vec<N> J_s = Vec<N>::Zero();        //!< [kg m^2] wheel spin-axis inertias
+  Mat3 J_B = Mat3::Constant(kUnset);              //!< [kg m^2] total inertia incl. wheels, B components, SPD
+  Mat<3, N> G_s_B = Mat<3, N>::Constant(kUnset);  //!< [-] wheel spin axes g_i (unit columns), B components
+  Vec<N> J_s = Vec<N>::Constant(kUnset);          //!< [kg m^2] wheel spin-axis inertias, > 0
 };
 
 template <int N>
@@ -43,15 +46,18 @@ class RigidBodyRw {
     J_rw_ = p_.J_B;
     for (int i = 0; i < N; ++i) J_rw_ -= p_.J_s(i) * p_.G_s_B.col(i) * p_.G_s_B.col(i).transpose();
     ldlt_.compute(J_rw_);
-    bool ok = all_finite(p_.J_B) && all_finite(p_.G_s_B) && all_finite(p_.J_s) &&
-              (p_.J_s.array() > 0.0).all() && ldlt_.info() == Eigen::Success && ldlt_.isPositive();
+    bool ok = symmetric<3>(p_.J_B) && all_finite(p_.G_s_B) && finite_positive(p_.J_s) &&
+              ldlt_.info() == Eigen::Success && ldlt_.isPositive();
     for (int i = 0; i < N && ok; ++i) ok = std::abs(p_.G_s_B.col(i).norm() - 1.0) < 1e-9;
     if (ok) ok = (ldlt_.vectorD().array() > 0.0).all();
-    status_ = ADCS_CHECK(ok, "RigidBodyRw: J - sum J_s g g^T must be SPD, axes unit, J_s > 0")
+    status_ = ADCS_CHECK(ok, "RigidBodyRw: J symmetric, J - sum J_s g g^T SPD, axes unit, J_s > 0")
                   ? Status::ok
                   : Status::invalid_parameter;
   }
 
+  //! ok, or invalid_parameter: J_B not finite or not symmetric; J_RW = J − Σ J_s g gᵀ not
+  //! positive definite (so neither is J); an axis not unit (1e-9); J_s not finite > 0. A refused
+  //! plant has no dynamics: derivative() gives xdot = 0.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
   //! J_RW = J - sum_i J_s,i g_i g_i^T [kg m^2]: inertia seen by omega_dot.
@@ -83,6 +89,10 @@ class RigidBodyRw {
   }
 
   void derivative(double /*t*/, const State& x, const Input& u, State& xdot) const noexcept {
+    if (status_ != Status::ok) {  // no valid model: a finite, frozen state instead of NaN
+      xdot.setZero();
+      return;
+    }
     const Vec3 sigma = sigma_BN(x);
     const Vec3 w = omega_BN_B(x);
     const Vec<N> us = u.template head<N>();

@@ -27,6 +27,7 @@
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/euler.hpp"
 #include "adcs/math/so3.hpp"
 #include "adcs/plant/orbit_environment.hpp"
@@ -67,10 +68,12 @@ struct Se3SpacecraftRates {
   }
 };
 
-//! Mass properties and environment of one spacecraft.
+//! Mass properties and environment of one spacecraft. J_B and m have no default (NaN until set:
+//! refused; se3_target_params, se3_chaser_nominal_params and se3_chaser_truth_params give seed
+//! 003's); the environment defaults to seed 003's Earth constants (GIVEN).
 struct Se3SpacecraftParams {
-  Mat3 J_B = Mat3::Identity();     //!< [kg m²] inertia about the centre of mass, body (SPD)
-  double m = 1.0;                  //!< [kg] mass (> 0)
+  Mat3 J_B = Mat3::Constant(kUnset);  //!< [kg m²] inertia about the centre of mass, body (SPD)
+  double m = kUnset;                  //!< [kg] mass (> 0)
   OrbitEnvironmentParams env{};    //!< Earth constants (μ, J2, R_E)
 };
 
@@ -101,6 +104,9 @@ class Se3Spacecraft {
                   : Status::invalid_parameter;
   }
 
+  //! ok, or invalid_parameter: J_B not finite, not symmetric or not positive definite; m not
+  //! finite > 0; the environment invalid (orbit_environment_valid). A refused plant answers
+  //! invalid_parameter from derivative() with `out` untouched.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
   const Mat3& J_inv() const noexcept { return J_inv_; }

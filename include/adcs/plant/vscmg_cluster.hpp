@@ -23,25 +23,30 @@
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 #include "adcs/math/mrp.hpp"
 #include "adcs/math/so3.hpp"
 
 namespace adcs {
 
-//! Geometry and inertias of a cluster of M CMGs and N reaction wheels.
+//! Geometry and inertias of a cluster of M CMGs and N reaction wheels. The axes, rotor momenta,
+//! wheel inertias and J_s have no default: NaN until set (set_cmg_pyramid, wheel_pyramid_axes,
+//! pyramid_4cmg_3rw_nominal), so a forgotten one is refused by every plant and controller that
+//! validates the geometry. The gimbal+rotor inertias I_cs, I_ct, I_cg default to 0: lumped into
+//! J_s, as the controller model of seed 001 eq. (5) has them.
 template <int M, int N>
 struct VscmgGeometry {
   static_assert(M >= 1 && N >= 0, "VscmgGeometry: need M >= 1 CMGs and N >= 0 wheels (N = 0: a pure CMG cluster)");
-  Mat<3, M> A_cg = Mat<3, M>::Zero();   //!< [-] gimbal axes g_i (columns), constant
-  Mat<3, M> A_cs0 = Mat<3, M>::Zero();  //!< [-] rotor spin axes s_i0 at gamma_i = 0
-  Mat<3, M> A_ct0 = Mat<3, M>::Zero();  //!< [-] transverse axes t_i0 at gamma_i = 0
-  Mat<3, N> A_ws = Mat<3, N>::Zero();   //!< [-] wheel spin axes s_wj (columns)
-  Vec<M> I_cs = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about s_i
-  Vec<M> I_ct = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about t_i
-  Vec<M> I_cg = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about g_i
-  Vec<M> h_cw = Vec<M>::Zero();         //!< [N m s] CMG rotor momentum h_cw,i = I_cws,i Omega_c,i
-  Vec<N> I_wws = Vec<N>::Zero();        //!< [kg m^2] wheel spin inertias
-  Mat3 J_s = Mat3::Identity();          //!< [kg m^2] body inertia (see header comment)
+  Mat<3, M> A_cg = Mat<3, M>::Constant(kUnset);   //!< [-] gimbal axes g_i (columns), constant
+  Mat<3, M> A_cs0 = Mat<3, M>::Constant(kUnset);  //!< [-] rotor spin axes s_i0 at gamma_i = 0
+  Mat<3, M> A_ct0 = Mat<3, M>::Constant(kUnset);  //!< [-] transverse axes t_i0 at gamma_i = 0
+  Mat<3, N> A_ws = Mat<3, N>::Constant(kUnset);   //!< [-] wheel spin axes s_wj (columns)
+  Vec<M> I_cs = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about s_i (0: in J_s)
+  Vec<M> I_ct = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about t_i (0: in J_s)
+  Vec<M> I_cg = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about g_i (0: in J_s)
+  Vec<M> h_cw = Vec<M>::Constant(kUnset);  //!< [N m s] CMG rotor momentum h_cw,i = I_cws,i Omega_c,i
+  Vec<N> I_wws = Vec<N>::Constant(kUnset);  //!< [kg m^2] wheel spin inertias
+  Mat3 J_s = Mat3::Constant(kUnset);    //!< [kg m^2] body inertia (see header comment), SPD
 
   //! A_cs(gamma) = A_cs0 diag(cos gamma) + A_ct0 diag(sin gamma).   seed 001 eq. (3)
   Mat<3, M> A_cs(const Vec<M>& gamma) const noexcept {
@@ -166,6 +171,13 @@ inline bool vscmg_geometry_valid(const VscmgGeometry<M, N>& g) noexcept {
 }
 }  // namespace detail
 
+//! True when the geometry is set and physical (see detail::vscmg_geometry_valid): what the plants
+//! and HybridAdaptive check at construction.
+template <int M, int N>
+inline bool valid(const VscmgGeometry<M, N>& g) noexcept {
+  return detail::vscmg_geometry_valid(g);
+}
+
 //! TP-FULL (spec A.2.4): full VSCMG cluster model in momentum form.
 //!
 //! State  x = [sigma_BN (3) [-]; h_B (3) [N m s] total angular momentum, B components;
@@ -202,6 +214,8 @@ class VscmgFullPlant {
                   : Status::invalid_parameter;
   }
 
+  //! ok, or invalid_parameter when either geometry is invalid (detail::vscmg_geometry_valid:
+  //! every entry finite, i.e. set; J_s symmetric positive definite; inertias and h_cw >= 0).
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
 
@@ -251,7 +265,12 @@ class VscmgFullPlant {
     return x;
   }
 
+  //! A refused plant (status() != ok) has no dynamics: xdot = 0, finite.
   void derivative(double /*t*/, const State& x, const Input& u, State& xdot) const noexcept {
+    if (status_ != Status::ok) {
+      xdot.setZero();
+      return;
+    }
     const Vec3 w = omega_BN_B(x, u);
     const Vec3 h = h_B(x);
     xdot.template head<3>() = mrp_G(sigma_BN(x)) * w;        // seed 001 eq. (6)
@@ -299,6 +318,8 @@ class VscmgCtrlPlant {
                   : Status::invalid_parameter;
   }
 
+  //! ok, or invalid_parameter when either geometry is invalid (as VscmgFullPlant) or J_n is not
+  //! finite, symmetric positive definite.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
   //! Constant inertia J_n [kg m^2].
@@ -319,7 +340,12 @@ class VscmgCtrlPlant {
     return mrp_to_dcm(sigma_BN(x)).transpose() * momentum_B(x);
   }
 
+  //! A refused plant (status() != ok) has no dynamics: xdot = 0, finite.
   void derivative(double /*t*/, const State& x, const Input& u, State& xdot) const noexcept {
+    if (status_ != Status::ok) {
+      xdot.setZero();
+      return;
+    }
     const Vec3 w = omega_BN_B(x);
     const Vec3 h = momentum_B(x);
     const Vec3 torque = -w.cross(h) - p_.truth.Q_act(gamma(x)) * u;  // seed 001 eq. (5), (11)
