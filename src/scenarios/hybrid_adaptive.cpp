@@ -20,6 +20,7 @@
 #include "scenarios/scenario.hpp"
 #include "scenarios/truth_plants.hpp"
 #include "scenarios/status_counts.hpp"
+#include "scenarios/verdicts.hpp"
 #include "sim/cvode_integrator.hpp"
 #include "sim/metrics.hpp"
 #include "sim/random.hpp"
@@ -45,17 +46,26 @@ constexpr const char* kPaper = "seed 001 §4";
 
 enum class Fault { none, stuck_gimbal, wheel };
 
+//! What a scenario changes from the spec's A-REF configuration (issue 16).
+enum class Variant {
+  paper,       //!< the spec's choices for what the paper omits (A-REF / A-BIAS)
+  projection,  //!< alpha_G raised until the smooth projection acts (R7 with teeth)
+  calibrated,  //!< the paper's unreported J, h_cw, deviation and bias from tools/calibrate-seed001.py
+};
+
 class HybridScenario final : public Scenario {
  public:
   //! flight_rate: A-REF at 10 Hz with the normalized adaptation step (beyond the paper).
-  HybridScenario(bool adaptive, bool bias, bool flight_rate = false, Fault fault = Fault::none)
-      : adaptive_(adaptive), bias_(bias), flight_rate_(flight_rate), fault_(fault) {}
+  HybridScenario(bool adaptive, bool bias, bool flight_rate = false, Fault fault = Fault::none,
+                 Variant variant = Variant::paper)
+      : adaptive_(adaptive), bias_(bias), flight_rate_(flight_rate), fault_(fault), variant_(variant) {}
 
   std::string name() const override {
     if (fault_ == Fault::stuck_gimbal) return "hybrid-fault-stuck-gimbal";
     if (fault_ == Fault::wheel) return "hybrid-fault-wheel";
     return std::string("hybrid-") + (adaptive_ ? "adaptive" : "nonadaptive") + (bias_ ? "-bias" : "") +
-           (flight_rate_ ? "-10hz" : "");
+           (flight_rate_ ? "-10hz" : "") + (variant_ == Variant::projection ? "-projection" : "") +
+           (variant_ == Variant::calibrated ? "-calibrated" : "");
   }
   std::string description() const override {
     return std::string("seed 001 ") + (bias_ ? "A-BIAS" : "A-REF") + ": 4-CMG pyramid + 3 wheels, D1 "
@@ -64,7 +74,11 @@ class HybridScenario final : public Scenario {
            (fault_ == Fault::stuck_gimbal ? "; fault: one CMG gimbal frozen at t = 100 s, FDIR fallback to the "
                                             "remaining actuators (ours)"
             : fault_ == Fault::wheel      ? "; fault: one reaction wheel lost at t = 100 s, FDIR fallback (ours)"
-                                          : "");
+                                          : "") +
+           (variant_ == Variant::projection ? "; alpha_G = 1e8 (ours) so that the projection bounds |Θ̂_G|² (R7)"
+            : variant_ == Variant::calibrated ? "; the paper's unreported J, h_cw, deviation and wheel bias chosen by "
+                                                "tools/calibrate-seed001.py (docs/data/seed001-calibration-grid.csv)"
+                                              : "");
   }
 
   void declare(ParamSet& p) const override {
@@ -101,7 +115,10 @@ class HybridScenario final : public Scenario {
     p.number("wheel_accel_max_rad_s2", 0.0, "rad/s^2",
              "spec A.5: none (0) in the baseline; optional 50 rad/s^2, per wheel, flagged if hit");
     p.number("alpha_F", adaptive_ ? 1.0e7 : 0.0, "-", kPaper);
-    p.number("alpha_G", adaptive_ ? 1.0e3 : 0.0, "-", kPaper);
+    if (variant_ == Variant::projection)  // 1e5 x the paper's: max |Θ̂_G|² 0.148, in (β, β + δ)
+      p.number("alpha_G", 1.0e8, "-", "ours: raised from seed 001's 1e3 until the projection acts (issue 16, R7)");
+    else
+      p.number("alpha_G", adaptive_ ? 1.0e3 : 0.0, "-", kPaper);
     p.number("beta_G", 0.05, "-", kPaper);
     p.number("delta_G", 0.1, "-", kPaper);
     p.vector("Kp_diag", {0.08, 0.18, 0.12}, "1/s^2", "spec §A.3 (eig listed in seed 001 §4)");
@@ -148,14 +165,36 @@ class HybridScenario final : public Scenario {
     r.metrics.push_back({"improvement_ratio_euler", ratio_att});
     r.metrics.push_back({"improvement_ratio_rate", ratio_rate});
     char buf[160];
-    std::snprintf(buf, sizeof buf,
-                  "%.2g x attitude, %.2g x rate (below the paper's 100x/10x, which needs "
-                  "parameters the paper does not give; spec A.6)",
-                  ratio_att, ratio_rate);
-    r.claims.push_back({"paper", std::string("R5 improvement over no adaptation: 2 orders attitude, 1 order rate") +
-                                     (bias_ ? " (A-BIAS)" : ""),
-                        "100x / 10x (paper); spec: >= 5x / >= 4x on A-REF (PROTO 6.7x / 6.3x)", buf,
-                        bias_ ? std::optional<bool>() : std::optional<bool>(ratio_att >= 5.0 && ratio_rate >= 4.0)});
+    std::snprintf(buf, sizeof buf, "%.2g x attitude, %.2g x rate", ratio_att, ratio_rate);
+    // Paper: "two orders of magnitude" in attitude, "one order" in rate: ratios >= 100 and >= 10
+    // (verdict_at_least on each; the row takes the worse of the two).
+    const PaperVerdict v_att = verdict_at_least(ratio_att, 100.0), v_rate = verdict_at_least(ratio_rate, 10.0);
+    const bool a_ref = !bias_ && variant_ == Variant::paper;
+    Claim r5{"paper", std::string("R5 improvement over no adaptation: 2 orders attitude, 1 order rate") +
+                          (bias_ ? " (A-BIAS)" : ""),
+             "'two orders of magnitude' attitude, 'one order' rate (§4): >= 100x / >= 10x", buf,
+             a_ref ? std::optional<bool>(ratio_att >= 5.0 && ratio_rate >= 4.0) : std::optional<bool>(),
+             static_cast<int>(v_att) > static_cast<int>(v_rate) ? v_att : v_rate,
+             a_ref ? ">= 5x / >= 4x on A-REF (spec A.6 R5; PROTO 6.7x / 6.3x)"
+                   : "informative (the spec's >= 5x / >= 4x is for A-REF)"};
+    if (!bias_ && r5.paper_verdict != PaperVerdict::reproduced)
+      r5.note = "the paper's baseline is 360x / 25x worse than ours (R1/R2): the paper omits J, h_cw, the "
+                "deviation draw and the wheel bias; see hybrid-adaptive-calibrated";
+    r.claims.push_back(r5);
+    // R3/R4 are bounds the baseline may meet without any adaptation: then they do not show that
+    // adaptation works, and the row says so (R5's ratio is the discriminating criterion).
+    const double base_att = b.metric("euler_err_ss_max_rad"), base_rate = b.metric("rate_err_ss_max_rad_s");
+    for (Claim& c : r.claims) {
+      char nb[160];
+      if (c.claim.rfind("R3 ", 0) == 0 && base_att <= 3e-3) {
+        std::snprintf(nb, sizeof nb, "not discriminating: the non-adaptive baseline meets it too (%.3g rad); R5 is", base_att);
+        c.note = nb;
+      } else if (c.claim.rfind("R4 ", 0) == 0 && base_rate <= 1e-4) {
+        std::snprintf(nb, sizeof nb, "not discriminating: the non-adaptive baseline meets it too (%.3g rad/s); R5 is",
+                      base_rate);
+        c.note = nb;
+      }
+    }
     const std::string n = name();
     r.plots.push_back({n + "-compare-attitude.png", "Principal-angle error: adaptive vs no adaptation (Figs. 2, 4)",
                        "t", {"principal_err", "principal_err_nonadaptive"}, "error [rad]", true});
@@ -448,8 +487,8 @@ class HybridScenario final : public Scenario {
       r.claims.push_back({"check", "actuator limits (optional, spec A.5) never reached",
                           "0 samples clipped (PROTO peaks 3.1e-3 rad/s, 8e-6 rad/s^2)",
                           std::to_string(limit_hits) + " samples clipped", limit_hits == 0});
-    add_claims(r, e_att_max, e_p_max, e_rate_max, proj_max, ctrl.safeguard_count(), sigma_min, E_H0,
-               E_H_late_max, gimbal_max, wheel_max, mode == "D1" && ctx.seed == 0);
+    add_claims(r, p.get_number("beta_G"), e_att_max, e_p_max, e_rate_max, proj_max, ctrl.safeguard_count(), sigma_min, E_H0,
+               E_H_late_max, gimbal_max, wheel_max, variant_ == Variant::paper && mode == "D1" && ctx.seed == 0);
     const std::string n = name();
     r.plots = {
         {n + "-theta-F.png", "Momentum-deviation estimate theta_F = H_I^Delta-hat", "t",
@@ -504,52 +543,90 @@ class HybridScenario final : public Scenario {
                         std::to_string(nonfinite_cmd) + " non-finite; statuses: " + statuses.summary(), nonfinite_cmd == 0});
   }
 
-  void add_claims(RunResult& r, double e_att, double e_p, double e_rate, double proj, unsigned safeguards,
-                  double sigma_min, double E_H0, double E_H_late, double gimbal, double wheel,
+  void add_claims(RunResult& r, double beta_G, double e_att, double e_p, double e_rate, double proj,
+                  unsigned safeguards, double sigma_min, double E_H0, double E_H_late, double gimbal, double wheel,
                   bool reference_set) const {
     char ours[128];
     auto fmt = [&](const char* f, double a, double b = 0) {
       std::snprintf(ours, sizeof ours, f, a, b);
       return std::string(ours);
     };
-    if (bias_) {
-      r.claims.push_back({"paper", adaptive_ ? "A-BIAS adaptive: attitude error (informative)"
+    // Within +-30 % of the prototype (spec A.6), where the run is the spec's reference set.
+    auto near_proto = [&](double x, double proto) { return !reference_set || std::abs(x / proto - 1.0) <= 0.3; };
+    if (bias_) {  // A-BIAS is the spec's case, not the paper's: a check against the prototype
+      r.claims.push_back({"check", adaptive_ ? "A-BIAS adaptive: attitude error (informative)"
                                              : "A-BIAS no adaptation: attitude error (informative)",
                           "PROTO θ_p " + std::string(adaptive_ ? "4.5e-4" : "1.46e-2") + " rad",
                           fmt("θ_p %.3g rad (Euler %.3g)", e_p, e_att), std::nullopt});
       return;
     }
     if (!adaptive_) {
+      // Paper: "of the order of 0.3 rad" / "1e-3 rad/s" (verdict_order_of). Our criterion pins the
+      // spec's reference set to the prototype: the paper omits what sets the baseline's size.
       r.claims.push_back({"paper", "R1 no adaptation: Euler error '0.3 rad order' (Fig. 2)",
-                          "0.3 rad order (PROTO 8.35e-4)", fmt("%.3g rad (θ_p %.3g)", e_att, e_p),
-                          std::nullopt});
+                          "'0.3 rad order' (Fig. 2)", fmt("%.3g rad (θ_p %.3g)", e_att, e_p),
+                          std::optional<bool>(near_proto(e_att, 8.35e-4)), verdict_order_of(e_att, 0.3),
+                          reference_set ? "within ±30 % of PROTO 8.35e-4 rad (spec A.6 R1)" : "informative (not the reference set)",
+                          "the paper omits J, h_cw, the deviation draw and the wheel bias, which set this size; "
+                          "hybrid-nonadaptive-calibrated searches them"});
+      if (!reference_set) r.claims.back().holds = std::nullopt;
       r.claims.push_back({"paper", "R2 no adaptation: rate error '1e-3 rad/s order' (Fig. 3)",
-                          "1e-3 rad/s order (PROTO 3.95e-5)", fmt("%.3g rad/s", e_rate), std::nullopt});
+                          "'1e-3 rad/s order' (Fig. 3)", fmt("%.3g rad/s", e_rate),
+                          std::optional<bool>(near_proto(e_rate, 3.95e-5)), verdict_order_of(e_rate, 1e-3),
+                          reference_set ? "within ±30 % of PROTO 3.95e-5 rad/s (spec A.6 R2)" : "informative (not the reference set)",
+                          "as R1"});
+      if (!reference_set) r.claims.back().holds = std::nullopt;
       return;
     }
-    const bool within_proto = !reference_set || std::abs(e_att / 1.25e-4 - 1.0) <= 0.3;
-    r.claims.push_back({"paper", std::string("R3 adaptive: Euler error settles at 0.003 rad (Fig. 4)") +
-                                     (flight_rate_ ? " — at 10 Hz, normalized step (ours)" : ""),
-                        "<= 3e-3 rad (PROTO 1.25e-4 ±30%)", fmt("%.3g rad (θ_p %.3g)", e_att, e_p),
-                        e_att <= 3e-3 && within_proto});
-    r.claims.push_back({"paper", "R4 adaptive: rate error '1e-4 rad/s order' (Fig. 5)",
-                        "<= 1e-4 rad/s (PROTO 6.27e-6)", fmt("%.3g rad/s", e_rate), e_rate <= 1e-4});
+    const std::string rate_tag = flight_rate_ ? " — at 10 Hz, normalized step (ours)" : "";
+    // R3/R4: the paper's numbers are bounds the error settles within (verdict_at_most).
+    r.claims.push_back({"paper", "R3 adaptive: Euler error settles at 0.003 rad (Fig. 4)" + rate_tag,
+                        "'settles at 0.003 rad' (Fig. 4): <= 3e-3 rad", fmt("%.3g rad (θ_p %.3g)", e_att, e_p),
+                        e_att <= 3e-3 && near_proto(e_att, 1.25e-4), verdict_at_most(e_att, 3e-3),
+                        "<= 3e-3 rad and within ±30 % of PROTO 1.25e-4 rad on the reference set (spec A.6 R3)"});
+    r.claims.push_back({"paper", "R4 adaptive: rate error '1e-4 rad/s order' (Fig. 5)" + rate_tag,
+                        "'1e-4 rad/s order' (Fig. 5): <= 1e-4 rad/s", fmt("%.3g rad/s", e_rate), e_rate <= 1e-4,
+                        verdict_at_most(e_rate, 1e-4), "<= 1e-4 rad/s (spec A.6 R4; PROTO 6.27e-6)"});
     r.claims.push_back({"paper", "R6 momentum estimate approaches the true momentum (Figs. 8-9)",
-                        "E_H(t) < E_H(0) for t >= 100 s (PROTO 0.335 -> 0.11..0.27)",
-                        fmt("E_H(0) %.3g, max after 100 s %.3g N m s", E_H0, E_H_late), E_H_late < E_H0});
-    r.claims.push_back({"paper", "R7 |theta_G|^2 never exceeds beta+delta = 0.15 (Figs. 10-11)",
-                        "<= 0.15, safeguard count 0 (PROTO 4e-4)",
-                        fmt("%.3g, safeguards %.0f", proj, double(safeguards)),
-                        proj <= 0.15 + 1e-9 && safeguards == 0});
+                        "'the estimate approaches the true momentum' (Figs. 8-9)",
+                        fmt("E_H(0) %.3g, max after 100 s %.3g N m s", E_H0, E_H_late), E_H_late < E_H0,
+                        verdict_if(E_H_late < E_H0),
+                        "E_H(t) < E_H(0) for t >= 100 s (spec A.6 R6; PROTO 0.335 -> 0.11..0.27)"});
+    Claim r7{"paper", "R7 |theta_G|^2 never exceeds beta+delta = 0.15 (Figs. 10-11)",
+             "'|Θ̂_G|² stays within β + δ' (Figs. 10-11): <= 0.15", fmt("%.3g, safeguards %.0f", proj, double(safeguards)),
+             proj <= 0.15 + 1e-9 && safeguards == 0, verdict_if(proj <= 0.15 + 1e-9),
+             "<= 0.15 and safeguard count 0 (spec A.6 R7; PROTO 4e-4)"};
+    if (proj < beta_G) {
+      char nb[160];
+      std::snprintf(nb, sizeof nb, "mechanism never active: max |Θ̂_G|² %.2g < β = %.2g, the projection did not act; "
+                    "hybrid-adaptive-projection exercises it", proj, beta_G);
+      r7.note = nb;
+    }
+    r.claims.push_back(r7);
+    if (variant_ == Variant::projection) {
+      char pb[96];
+      std::snprintf(pb, sizeof pb, "max |Θ̂_G|² %.3g vs β = %.2g", proj, beta_G);
+      r.claims.push_back({"check", "the projection acts in this variant (R7 exercised)",
+                          "max |Θ̂_G|² > β (the band where the smooth projection bends the update)", pb,
+                          proj > beta_G});
+    }
     r.claims.push_back({"paper", "R8 gimbal angles and wheel speeds bounded (Figs. 6-7)",
-                        "bounded (PROTO 0.274 rad; 8.3e-4 rad/s)",
-                        fmt("%.3g rad; %.3g rad/s", gimbal, wheel), std::nullopt});
-    r.claims.push_back({"paper", "R9 pseudo-inverse exists throughout", "sigma_min(X) > 0 (PROTO 0.0170)",
-                        fmt("%.4g", sigma_min), sigma_min > 0.0});
+                        "'gimbal angles and wheel speeds remain bounded' (Figs. 6-7)",
+                        fmt("%.3g rad; %.3g rad/s", gimbal, wheel),
+                        reference_set ? std::optional<bool>(near_proto(gimbal, 0.274)) : std::nullopt,
+                        verdict_if(std::isfinite(gimbal) && std::isfinite(wheel)),
+                        reference_set ? "max gimbal angle within ±30 % of PROTO 0.274 rad (spec A.6 R8)"
+                                      : "informative (not the reference set)"});
+    r.claims.push_back({"paper", "R9 pseudo-inverse exists throughout", "'the pseudo-inverse exists' (§3): σ_min(X) > 0",
+                        fmt("%.4g", sigma_min), sigma_min > 0.0, verdict_if(sigma_min > 0.0),
+                        "σ_min(X) > 0 (spec A.6 R9; PROTO 0.0170)",
+                        "not discriminating: the three body-axis wheel columns alone keep σ_min(X) > 0 for any "
+                        "gimbal angles"});
   }
 
   bool adaptive_, bias_, flight_rate_;
   Fault fault_;
+  Variant variant_ = Variant::paper;
 };
 
 }  // namespace
@@ -559,6 +636,9 @@ std::unique_ptr<Scenario> make_hybrid_nonadaptive() { return std::make_unique<Hy
 std::unique_ptr<Scenario> make_hybrid_adaptive_bias() { return std::make_unique<HybridScenario>(true, true); }
 std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias() { return std::make_unique<HybridScenario>(false, true); }
 std::unique_ptr<Scenario> make_hybrid_adaptive_10hz() { return std::make_unique<HybridScenario>(true, false, true); }
+std::unique_ptr<Scenario> make_hybrid_adaptive_projection() {
+  return std::make_unique<HybridScenario>(true, false, false, Fault::none, Variant::projection);
+}
 std::unique_ptr<Scenario> make_hybrid_fault_stuck_gimbal() {
   return std::make_unique<HybridScenario>(true, false, false, Fault::stuck_gimbal);
 }

@@ -14,6 +14,7 @@ std::unique_ptr<Scenario> make_hybrid_nonadaptive();
 std::unique_ptr<Scenario> make_hybrid_adaptive_bias();
 std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias();
 std::unique_ptr<Scenario> make_hybrid_adaptive_10hz();
+std::unique_ptr<Scenario> make_hybrid_adaptive_projection();
 std::unique_ptr<Scenario> make_hybrid_fault_stuck_gimbal();
 std::unique_ptr<Scenario> make_hybrid_fault_wheel();
 std::unique_ptr<Scenario> make_flexible_ppc();
@@ -42,6 +43,7 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_hybrid_adaptive_bias());
   v.push_back(make_hybrid_nonadaptive_bias());
   v.push_back(make_hybrid_adaptive_10hz());
+  v.push_back(make_hybrid_adaptive_projection());
   v.push_back(make_hybrid_fault_stuck_gimbal());
   v.push_back(make_hybrid_fault_wheel());
   v.push_back(make_flexible_ppc());

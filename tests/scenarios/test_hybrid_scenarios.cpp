@@ -2,6 +2,7 @@
 // TP-FULL truth plant, 1 ms sampled adaptive law, 800 s. R1/R2/R8 are recorded, not asserted.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 
 #include "scenario_test_util.hpp"
@@ -12,6 +13,53 @@ using adcs::sim::RunResult;
 
 using adcs::sim::test::metric;
 using adcs::sim::test::run;
+using adcs::sim::PaperVerdict;
+
+//! The paper verdict of the claim whose text starts with `prefix` (fails the test if absent).
+std::optional<PaperVerdict> verdict(const RunResult& r, const std::string& prefix) {
+  for (const auto& c : r.claims)
+    if (c.claim.rfind(prefix, 0) == 0) return c.paper_verdict;
+  ADD_FAILURE() << "no claim starting with " << prefix;
+  return std::nullopt;
+}
+bool has_note(const RunResult& r, const std::string& prefix, const std::string& words) {
+  for (const auto& c : r.claims)
+    if (c.claim.rfind(prefix, 0) == 0) return c.note.find(words) != std::string::npos;
+  return false;
+}
+
+// Issue 16: the paper's own numbers, judged separately from our criteria. On A-REF the bounds
+// R3/R4 are reproduced but do not discriminate (the baseline meets them); R5's 100x / 10x is not
+// reproduced (6.7x / 6.3x); R7's projection never acts; R9 cannot fail with three wheels.
+TEST(HybridAref, PaperVerdicts) {
+  const RunResult r = run("hybrid-adaptive");
+  EXPECT_EQ(verdict(r, "R3 "), PaperVerdict::reproduced);
+  EXPECT_EQ(verdict(r, "R4 "), PaperVerdict::reproduced);
+  EXPECT_TRUE(has_note(r, "R3 ", "not discriminating"));
+  EXPECT_TRUE(has_note(r, "R4 ", "not discriminating"));
+  EXPECT_EQ(verdict(r, "R5 "), PaperVerdict::not_reproduced);
+  EXPECT_EQ(verdict(r, "R6 "), PaperVerdict::reproduced);
+  EXPECT_EQ(verdict(r, "R7 "), PaperVerdict::reproduced);
+  EXPECT_TRUE(has_note(r, "R7 ", "mechanism never active"));
+  EXPECT_EQ(verdict(r, "R8 "), PaperVerdict::reproduced);
+  EXPECT_EQ(verdict(r, "R9 "), PaperVerdict::reproduced);
+  EXPECT_TRUE(has_note(r, "R9 ", "not discriminating"));
+  const RunResult b = run("hybrid-nonadaptive");
+  EXPECT_EQ(verdict(b, "R1 "), PaperVerdict::not_reproduced);  // 8.35e-4 rad vs "0.3 rad order"
+  EXPECT_EQ(verdict(b, "R2 "), PaperVerdict::not_reproduced);  // 3.95e-5 rad/s vs "1e-3 rad/s order"
+}
+
+// R7 with teeth: alpha_G = 1e8 drives |Θ̂_G|² into the projection band (β, β + δ) and the
+// projection keeps it below β + δ = 0.15 without the safeguard.
+TEST(HybridAref, ProjectionVariantExercisesR7) {
+  const RunResult r = run("hybrid-adaptive-projection", {{"baseline", "skip"}});
+  EXPECT_GT(metric(r, "proj_norm2_max"), 0.05);
+  EXPECT_LE(metric(r, "proj_norm2_max"), 0.15 + 1e-9);
+  EXPECT_EQ(metric(r, "proj_safeguard_count"), 0.0);
+  EXPECT_EQ(verdict(r, "R7 "), PaperVerdict::reproduced);
+  EXPECT_FALSE(has_note(r, "R7 ", "mechanism never active"));
+  EXPECT_EQ(metric(r, "nonok_steps"), 0.0);
+}
 
 TEST(HybridAref, PaperClaimsR3toR7andR9) {
   const RunResult r = run("hybrid-adaptive");
