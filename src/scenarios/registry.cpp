@@ -15,6 +15,8 @@ std::unique_ptr<Scenario> make_hybrid_adaptive_bias();
 std::unique_ptr<Scenario> make_hybrid_nonadaptive_bias();
 std::unique_ptr<Scenario> make_hybrid_adaptive_10hz();
 std::unique_ptr<Scenario> make_hybrid_adaptive_projection();
+std::unique_ptr<Scenario> make_hybrid_adaptive_calibrated();
+std::unique_ptr<Scenario> make_hybrid_nonadaptive_calibrated();
 std::unique_ptr<Scenario> make_hybrid_fault_stuck_gimbal();
 std::unique_ptr<Scenario> make_hybrid_fault_wheel();
 std::unique_ptr<Scenario> make_flexible_ppc();
@@ -44,6 +46,8 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_hybrid_nonadaptive_bias());
   v.push_back(make_hybrid_adaptive_10hz());
   v.push_back(make_hybrid_adaptive_projection());
+  v.push_back(make_hybrid_adaptive_calibrated());
+  v.push_back(make_hybrid_nonadaptive_calibrated());
   v.push_back(make_hybrid_fault_stuck_gimbal());
   v.push_back(make_hybrid_fault_wheel());
   v.push_back(make_flexible_ppc());

@@ -61,6 +61,25 @@ TEST(HybridAref, ProjectionVariantExercisesR7) {
   EXPECT_EQ(metric(r, "nonok_steps"), 0.0);
 }
 
+// Issue 16: seed 001 calibrated to the paper's own baseline (tools/calibrate-seed001.py, best
+// grid point: h_cw 40 N m s, J x 0.25, a Mode-A draw, 150 rad/s unknown wheel bias). The baseline
+// comes within 0.54 decades of R1's "0.3 rad order" and 0.4 of R2's "1e-3 rad/s"; on it the
+// adaptive law meets R3's 0.003 rad but not R4 or R5's 100x / 10x. Recorded, whichever it is.
+TEST(HybridCalibrated, BaselineNearThePapersOrdersAndWhatAdaptationThenDoes) {
+  const RunResult b = run("hybrid-nonadaptive-calibrated");
+  EXPECT_NEAR(metric(b, "euler_err_ss_max_rad"), 0.0855, 0.005);
+  EXPECT_NEAR(metric(b, "rate_err_ss_max_rad_s"), 2.51e-3, 2e-4);
+  EXPECT_EQ(verdict(b, "R1 "), PaperVerdict::partly);
+  EXPECT_EQ(verdict(b, "R2 "), PaperVerdict::reproduced);
+  const RunResult r = run("hybrid-adaptive-calibrated");
+  EXPECT_EQ(verdict(r, "R3 "), PaperVerdict::reproduced);
+  EXPECT_FALSE(has_note(r, "R3 ", "not discriminating"));  // the baseline is 0.0855 rad here
+  EXPECT_EQ(verdict(r, "R4 "), PaperVerdict::not_reproduced);
+  EXPECT_EQ(verdict(r, "R5 "), PaperVerdict::not_reproduced);
+  EXPECT_NEAR(metric(r, "improvement_ratio_euler"), 33.5, 2.0);
+  EXPECT_LT(metric(r, "improvement_ratio_rate"), 1.0);
+}
+
 TEST(HybridAref, PaperClaimsR3toR7andR9) {
   const RunResult r = run("hybrid-adaptive");
   const double e_att = metric(r, "euler_err_ss_max_rad");
