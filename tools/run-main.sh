@@ -2,7 +2,7 @@
 # "Run the main job" (README command 1):
 #   install missing Debian packages, build Release, run every registered scenario with its
 #   defaults, and write out/: NAME.csv, NAME.json, PNG plots, and out/REPORT.md (paper claim |
-#   paper value | ours | holds?).
+#   the paper's own value | ours | paper verdict | our criterion | criterion holds?).
 # Usage: tools/run-main.sh [OUT_DIR]   (default: out)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
