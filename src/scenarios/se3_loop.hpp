@@ -5,6 +5,7 @@
 // Truth model, integrator and per-tick order are described in se3_loop.cpp.
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
 #include "scenarios/params.hpp"
+#include "scenarios/verdicts.hpp"
 
 namespace adcs::sim::se3 {
 
@@ -67,5 +69,36 @@ bool prototype_conditions(const ParamSet& p);
 //! One closed-loop run; writes its time series to csv_path unless it is empty. Throws ParamError
 //! for rejected parameters, SimError when the loop diverges.
 Outcome simulate(const Se3Config& c, Law law, const std::string& csv_path);
+
+//! Steady bounds of one run (spec A.9): max |.| over the ticks in [window0, window1]; NaN when
+//! the run has no tick there. The same numbers as the single runs' *_ss metrics.
+struct Steady {
+  double att_deg = NAN, pos_m = NAN, rate_deg_s = NAN, vel_m_s = NAN;
+};
+Steady steady_bounds(const Outcome& o, const Se3Config& c);
+
+//! Paper verdict of a statement made of several parts (e.g. "settles before T, in about 90.5 s"):
+//! reproduced when every part is, not reproduced when none is even partly, else partly
+//! (verdict_if: the run shows the statement only in part).
+inline PaperVerdict all_parts(std::initializer_list<PaperVerdict> parts) {
+  bool all = true, some = false;
+  for (PaperVerdict v : parts) {
+    all = all && v == PaperVerdict::reproduced;
+    some = some || v != PaperVerdict::not_reproduced;
+  }
+  return verdict_if(all, some);
+}
+
+//! The BsPdTC's and the FTSMC's steady bounds from one initial state (same conditions).
+struct SteadyPair {
+  int state;
+  Steady ptc, fts;
+};
+//! The paper's accuracy comparison (§3.2 2), conclusion 4): "the BsPdTC's control accuracy is also
+//! slightly higher than the FTSMC's" (state 1: 3.72e-3 vs 4.77e-3 deg, 3.28e-5 vs 5.58e-5 m).
+//! Paper verdict (when `judged`, i.e. the paper's conditions): the BsPdTC's steady max |θ_i| and
+//! max |β_i| no larger than the FTSMC's in every pair; `ours` gives the ratios BsPdTC/FTSMC.
+//! No criterion of ours: the spec has no item for this comparison (informative, holds empty).
+Claim accuracy_comparison_claim(const std::vector<SteadyPair>& pairs, bool judged);
 
 }  // namespace adcs::sim::se3

@@ -2,16 +2,22 @@
 // pinned to the spec's prototype (PROTO, Appendix C.3) with the spec's tolerances: ±15 %, settling
 // times ±10 s; hard requirements t_s(β) < T, t_s(β) increasing in T and N_tx ≤ 3072. Each 200 s run
 // takes ~0.3 s; the state-1 BsPdTC run is shared.
+// Issue 16: the paper verdicts (against the paper's own numbers, src/scenarios/verdicts.hpp) are
+// asserted per claim, found by a stable prefix of the claim text, so a change in the physics that
+// moves a claim across a verdict boundary fails here visibly.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scenario_test_util.hpp"
 
 namespace {
+using adcs::sim::Claim;
+using adcs::sim::PaperVerdict;
 using adcs::sim::RunResult;
 using adcs::sim::test::expect_claims_hold;
 using adcs::sim::test::metric;
@@ -25,6 +31,43 @@ const RunResult& ptc_state1() {
 
 void expect_within15(double ours, double proto, const char* what) {
   EXPECT_NEAR(ours, proto, 0.15 * proto) << what;
+}
+
+//! The one claim whose text starts with `prefix` (nullptr, with a failure, if not exactly one).
+const Claim* find_claim(const RunResult& r, const std::string& prefix) {
+  const Claim* found = nullptr;
+  int n = 0;
+  for (const Claim& c : r.claims)
+    if (c.claim.rfind(prefix, 0) == 0) found = &c, ++n;
+  EXPECT_EQ(n, 1) << "claims starting with '" << prefix << "'";
+  return n == 1 ? found : nullptr;
+}
+
+//! The claim's paper verdict is `v` (compared as text, so a failure prints both).
+void expect_verdict(const RunResult& r, const std::string& prefix, PaperVerdict v) {
+  const Claim* c = find_claim(r, prefix);
+  if (c == nullptr) return;
+  ASSERT_TRUE(c->paper_verdict.has_value()) << c->claim;
+  EXPECT_STREQ(to_string(*c->paper_verdict), to_string(v)) << c->claim << ": " << c->ours << " (paper "
+                                                           << c->paper_value << ")";
+}
+
+void expect_no_verdict(const RunResult& r, const std::string& prefix) {
+  const Claim* c = find_claim(r, prefix);
+  if (c != nullptr) EXPECT_FALSE(c->paper_verdict.has_value()) << c->claim << ": " << c->note;
+}
+
+//! Issue 16 rules every row follows: checks carry no paper verdict; no fixed verdict words in the
+//! texts (the verdicts are the computed fields); a criterion is stated wherever one is judged.
+void expect_verdict_fields_consistent(const RunResult& r) {
+  for (const Claim& c : r.claims) {
+    if (c.kind == "check") EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
+    if (c.holds.has_value()) EXPECT_FALSE(c.criterion.empty()) << c.claim;
+    for (const std::string* text : {&c.claim, &c.paper_value, &c.ours, &c.criterion}) {
+      EXPECT_EQ(text->find("reproduced"), std::string::npos) << c.claim << ": " << *text;
+      EXPECT_EQ(text->find("not met"), std::string::npos) << c.claim << ": " << *text;
+    }
+  }
 }
 
 TEST(Se3Scenarios, PtcState1MatchesPrototypeItems1To5And10) {
@@ -61,6 +104,31 @@ TEST(Se3Scenarios, TransmissionsItem8) {
   expect_within15(metric(r, "transmissions"), 2957.0, "transmissions");
 }
 
+// Issue 16: state 1, T = 120 s against the paper's own numbers (§3.1). Our criteria (PROTO ±15 %,
+// N_tx <= 3072) hold throughout; the paper verdicts differ where the reconstruction differs.
+TEST(Se3Scenarios, PtcState1PaperVerdicts) {
+  const RunResult& r = ptc_state1();
+  // Before T as stated, but 0.40 x / 0.63 x the paper's 75.8 s / 90.5 s (verdict_value: partly or not).
+  expect_verdict(r, "A.9-1 attitude converges", PaperVerdict::partly);
+  expect_verdict(r, "A.9-2/6/7 position converges", PaperVerdict::partly);
+  // 8.8e-3 deg and 3.7e-3 deg/s: more than twice the paper's bounds 3.72e-3 deg, 1.60e-3 deg/s.
+  expect_verdict(r, "A.9-3 steady attitude error", PaperVerdict::not_reproduced);
+  expect_verdict(r, "A.9-4 steady position error", PaperVerdict::reproduced);
+  expect_verdict(r, "A.9-5 steady rate error", PaperVerdict::not_reproduced);
+  expect_verdict(r, "A.9-5 steady velocity error", PaperVerdict::reproduced);
+  // 69.2 % fewer transmissions against the paper's "> 70 %", though N_tx <= 3072 (68 %) holds.
+  expect_verdict(r, "A.9-8 transmissions", PaperVerdict::partly);
+  const Claim* tx = find_claim(r, "A.9-8 transmissions");
+  ASSERT_NE(tx, nullptr);
+  EXPECT_EQ(tx->holds, std::optional<bool>(true));
+  EXPECT_LT(metric(r, "tx_reduction"), 0.70);
+  expect_verdict(r, "A.9-10 psi_hat overshoots", PaperVerdict::reproduced);
+  // Dwell: torque ~7 s yes, force ~10 s no (24.9 s), steady "mostly > one period" no (46 %).
+  expect_verdict(r, "A.9-9 dwell times", PaperVerdict::partly);
+  expect_no_verdict(r, "A.9-14 initial errors");  // the paper's values are for state 4
+  expect_verdict_fields_consistent(r);
+}
+
 TEST(Se3Scenarios, EveryInitialStateSettlesBeforeTItems6And14) {
   const double proto[4] = {57.1, 74.8, 86.5, 116.4};
   std::vector<double> settle{metric(ptc_state1(), "settle_pos_s")};
@@ -74,7 +142,14 @@ TEST(Se3Scenarios, EveryInitialStateSettlesBeforeTItems6And14) {
       EXPECT_NEAR(metric(r, "eta0_att_deg"), 165.48, 0.05);
       EXPECT_NEAR(metric(r, "eta0_pos_m"), 71.2, 0.1);
       EXPECT_NEAR(metric(r, "Re0_m"), 55.45, 0.01);
+      // 165.48 deg and 71.2 m against the paper's 165.5 deg and 79.9 m (verdict_value, 30 %).
+      expect_verdict(r, "A.9-14 initial errors", PaperVerdict::reproduced);
+      // 116 s < T and 1.2 x the paper's 96.8 s.
+      expect_verdict(r, "A.9-2/6/7 position converges", PaperVerdict::reproduced);
     }
+    expect_no_verdict(r, "A.9-3 steady attitude error");  // the paper's bound is for state 1
+    expect_no_verdict(r, "A.9-8 transmissions");
+    expect_verdict_fields_consistent(r);
     expect_claims_hold(r);
   }
   // 11 (informational, not gated): the paper's < 10 s spread is not reproduced (PROTO 59 s).
@@ -121,6 +196,23 @@ TEST(Se3Scenarios, CampaignItems6To7And11To12) {
   for (const auto& claim : c.claims) gated += claim.holds.has_value() ? 1 : 0;
   EXPECT_EQ(gated, 4 + 1 + 1 + 1);  // 6 (x4), 7, 12 first part, the no-failure check
   expect_claims_hold(c);
+  // Issue 16, paper verdicts. 6: all before T; state 1 at 0.63 x the paper's 90.5 s (partly),
+  // states 3, 4 within 30 % of 95.2 / 96.8 s, state 2 has no paper time.
+  expect_verdict(c, "A.9-6 BsPdTC position settles before T, initial state 1", PaperVerdict::partly);
+  expect_verdict(c, "A.9-6 BsPdTC position settles before T, initial state 2", PaperVerdict::reproduced);
+  expect_verdict(c, "A.9-6 BsPdTC position settles before T, initial state 3", PaperVerdict::reproduced);
+  expect_verdict(c, "A.9-6 BsPdTC position settles before T, initial state 4", PaperVerdict::reproduced);
+  // 7: below T and increasing as stated, at 0.61-0.66 x the paper's times.
+  expect_verdict(c, "A.9-7 T sweep", PaperVerdict::partly);
+  // 11: 59 s against the paper's "< 10 s".
+  expect_verdict(c, "A.9-11 BsPdTC spread", PaperVerdict::not_reproduced);
+  expect_verdict(c, "A.9-12 FTSMC position settles no later", PaperVerdict::reproduced);
+  // 12: the FTSMC settles from state 4 inside 120 s (paper 127.6 s); spread 56 s vs "close to 40 s".
+  expect_verdict(c, "A.9-12 FTSMC from state 4 exceeds", PaperVerdict::not_reproduced);
+  expect_verdict(c, "A.9-12 FTSMC spread", PaperVerdict::partly);
+  // The paper's "BsPdTC slightly more accurate than the FTSMC" is reversed here in every state.
+  expect_verdict(c, "BsPdTC steady errors below the FTSMC's", PaperVerdict::not_reproduced);
+  expect_verdict_fields_consistent(c);
 }
 
 // Figs 8-9: the dwell table has, per channel, one entry per constant interval of u_c; the
@@ -160,8 +252,39 @@ TEST(Se3Scenarios, FtsmcSettlesNoLaterThanPtcItem12) {
   EXPECT_EQ(metric(f, "nonok_steps"), 0.0);
 }
 
+// The BsPdTC companion of se3-ftsmc (same state, Table 1 gains, T = 120 s) gives the paper's
+// accuracy comparison: the FTSMC's steady errors are ~8x (attitude) and ~3.6x (position) lower,
+// the reverse of the paper's conclusion 4.
+TEST(Se3Scenarios, FtsmcCompanionPaperVerdictsItem12) {
+  const RunResult f = run("se3-ftsmc");
+  const RunResult& p = ptc_state1();
+  EXPECT_EQ(metric(f, "ptc_settle_pos_s"), metric(p, "settle_pos_s"));  // the companion is se3-ptc's run
+  EXPECT_EQ(metric(f, "ptc_transmissions"), metric(p, "transmissions"));
+  EXPECT_GT(metric(p, "att_err_ss_deg"), 4.0 * metric(f, "att_err_ss_deg"));
+  EXPECT_GT(metric(p, "pos_err_ss_m"), 2.0 * metric(f, "pos_err_ss_m"));
+  expect_verdict(f, "BsPdTC steady errors below the FTSMC's", PaperVerdict::not_reproduced);
+  expect_verdict(f, "A.9-12 FTSMC position settles no later", PaperVerdict::reproduced);
+  expect_verdict(f, "FTSMC steady errors and settling", PaperVerdict::reproduced);  // below 4.77e-3 deg ...
+  expect_no_verdict(f, "A.9-12 FTSMC from state 4 exceeds");                      // state 1 run
+  expect_no_verdict(f, "A.9-9 dwell times");  // the paper gives the BsPdTC's only
+  expect_verdict_fields_consistent(f);
+  expect_claims_hold(f);  // 12 (first part), the PROTO transmission check, the actuator check
+  // Without the companion the comparison is not computed, so it has no verdict.
+  const RunResult skip = run("se3-ftsmc", {{"companion", "skip"}});
+  expect_no_verdict(skip, "BsPdTC steady errors below the FTSMC's");
+  expect_no_verdict(skip, "A.9-12 FTSMC position settles no later");
+  // State 4: the FTSMC settles inside 120 s, against the paper's "exceeds" (127.6 s).
+  const RunResult f4 = run("se3-ftsmc", {{"initial_state", "4"}, {"companion", "skip"}});
+  EXPECT_NEAR(metric(f4, "settle_pos_s"), 105.8, 10.0);  // PROTO 105.8 s
+  expect_verdict(f4, "A.9-12 FTSMC from state 4 exceeds", PaperVerdict::not_reproduced);
+  expect_claims_hold(f4);
+}
+
 TEST(Se3Scenarios, WithoutQuantizerMoreTransmissions) {
   const RunResult r = run("se3-ptc", {{"quantize", "0"}});
+  // Not the paper's conditions: no claim gets a paper verdict.
+  for (const Claim& c : r.claims) EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
+  expect_verdict_fields_consistent(r);
   EXPECT_GT(metric(r, "transmissions"), metric(ptc_state1(), "transmissions"));
   EXPECT_LE(metric(r, "transmissions"), 9600.0);
   EXPECT_LT(metric(r, "settle_pos_s"), 120.0);
