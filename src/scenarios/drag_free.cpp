@@ -13,6 +13,7 @@
 #include "adcs/estimate/fusion.hpp"
 #include "adcs/plant/drag_free.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/verdicts.hpp"
 #include "sim/metrics.hpp"
 #include "sim/random.hpp"
 #include "sim/recorder.hpp"
@@ -267,8 +268,21 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "L1 %.3g, L2 %.3g, L3 %.3g N (saturated %.0f%%)", L1, L2, L3,
                 100.0 * saturated / double(n + 1));
-  r.claims.push_back({"paper", "B.9-1 (Fig. 5) the saturated update beats skipping, close to unsaturated data",
-                      "RMS_L2 < RMS_L1 < RMS_L3 (PROTO 1.08e-3 < 2.60e-3 < 5.68e-3 N)", buf, L2 < L1 && L1 < L3});
+  {
+    Claim c{"paper", "B.9-1 (Fig. 5) the saturated update (L1) beats skipping saturated samples (L3); unsaturated data (L2) does best",
+            "'L3: the estimate shows an obvious bias'; 'from L1 vs L2 the saturation does affect the estimate'; "
+            "'from L1 vs L3 ... Algorithm 2 uses the set-valued information clearly' (Fig. 5, no numbers)",
+            buf, L2 < L1 && L1 < L3};
+    // Rule verdict_if: the paper states an ordering, no number. Reproduced when both comparisons
+    // show (L2 < L1: saturation costs accuracy; L1 < L3: the saturated update beats skipping),
+    // partly when only one does.
+    c.paper_verdict = verdict_if(L2 < L1 && L1 < L3, L2 < L1 || L1 < L3);
+    c.criterion = "RMS_L2 < RMS_L1 < RMS_L3 for t >= 10 s (spec B.9-1; PROTO 1.08e-3 < 2.60e-3 < 5.68e-3 N)";
+    c.note = std::string(saturated > 0 ? "the saturation acted on " : "the accelerometer never saturated (the test is empty): ") +
+             format_number(double(saturated)) + " of " + format_number(double(n + 1)) +
+             " samples; the paper gives no scenario: open loop from t0 = (pi/2)/omega_d is the spec's [A]";
+    r.claims.push_back(c);
+  }
   r.plots.push_back({"dragfree-estimators-L123.png", "Disturbance estimates L1/L2/L3 vs truth, X axis (Fig. 5)", "t",
                      {"F_Dsc_x", "f_hat_L1", "f_hat_L2", "f_hat_L3"}, "F_Dsc,x [N]", false});
   r.plots.push_back({"dragfree-estimators-accel.png", "Accelerometer: true vs saturated reading", "t",
@@ -337,6 +351,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
   long rx_count = 0, saturated = 0, projections = 0, nonok = 0;
   double rel_recover1 = NAN, rel_recover2 = NAN, rel_last_above = -1.0;
   std::vector<double> ts, ph[3];  // attitude trace after the steps (decimated 1 s) for settling
+  std::vector<double> prel;       // max_i |phi_rel,i| on the same samples (item 7: 2 % of its peak)
   Vec3 final_err_on = Vec3::Constant(NAN), final_err_off = Vec3::Constant(NAN);
   Vec<9> u_prev = Vec<9>::Zero(), u = Vec<9>::Zero();
   std::vector<double> row;
@@ -405,6 +420,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
     if (t >= t_on && k % 10 == 0) {
       ts.push_back(t);
       for (int j = 0; j < 3; ++j) ph[j].push_back(X(Ix::phi_sc + j));
+      prel.push_back(rel);
     }
     if (std::abs(t - (t_off - h)) < 0.5 * h) {
       final_err_on = X.segment<3>(Ix::phi_sc) - step_cmd;
@@ -450,6 +466,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
   const double fusion = rms(f_err_fused), a1 = rms(f_err_1), a2 = rms(f_err_2);
   // Item 8: Welch exactly as spec B.9-8 (Hann, 2^15, 50 %, mean removed, one-sided).
   double asd_med = NAN, asd_max = NAN, asd_f = NAN, asd_med_yz[2] = {NAN, NAN};
+  double asd_max_yz[2] = {NAN, NAN}, asd_f_yz[2] = {NAN, NAN};
   Table asd_table{"NAME-asd.csv", {"f_Hz"}, {"Hz"}, {}};
   for (int j = 0; j < 3; ++j) {
     if (a_tm[j].size() < 32768) break;
@@ -472,6 +489,8 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
       asd_f = fmx;
     } else {
       asd_med_yz[j - 1] = metrics::median(band);
+      asd_max_yz[j - 1] = mx;
+      asd_f_yz[j - 1] = fmx;
     }
   }
   // Item 7: 2 % settling of each φ_sc axis after each step (from the 1 s trace).
@@ -489,6 +508,19 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
     settle_up(j) = settle(j, t_on, t_off, step_cmd(j), step_cmd(j));
     settle_down(j) = settle(j, t_off, n * h + 1, 0.0, step_cmd(j));
   }
+  // Item 7: the time max_i |phi_rel,i| takes to stay within 2 % of its peak after each step, the
+  // same 2 % rule as the attitude's settling above (the paper's "the relative attitude loop
+  // adjusts quickly" is judged against the attitude's own settling, see the B.9-7 row).
+  auto rel_settle = [&](double t_from, double t_to, double peak) {
+    std::vector<double> tt, yy;
+    for (std::size_t i = 0; i < ts.size(); ++i)
+      if (ts[i] >= t_from && ts[i] < t_to) {
+        tt.push_back(ts[i]);
+        yy.push_back(prel[i]);
+      }
+    return tt.empty() ? NAN : metrics::settling_time(tt, yy, 0.02 * peak);
+  };
+  const double rel_settle1 = rel_settle(t_on, t_off, rel_peak1), rel_settle2 = rel_settle(t_off, n * h + 1, rel_peak2);
   const double final_err = std::max(final_err_on.cwiseAbs().maxCoeff(), final_err_off.cwiseAbs().maxCoeff());
   const bool recovered = rel_recover1 < (t_off - t_on) && rel_recover2 < (n * h - t_off) &&
                          X.segment<3>(Ix::phi_rel).cwiseAbs().maxCoeff() < 1e-6;
@@ -527,7 +559,16 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
                {"rel_att_recovery_s_step1", rel_recover1},
                {"rel_att_recovery_s_step2", rel_recover2},
                {"psd_projections", double(projections)},
-               {"nonok_steps", double(nonok)}};
+               {"nonok_steps", double(nonok)},
+               // added for the paper verdicts (issue 16); the metrics above are unchanged
+               {"alg1_pos_rmse_0_100", r1w[0]},
+               {"alg1_pos_rmse_100_1000", r1w[1]},
+               {"asd_tm_acc_max_1_30mHz_y", asd_max_yz[0]},
+               {"asd_tm_acc_max_1_30mHz_z", asd_max_yz[1]},
+               {"asd_tm_acc_peak_freq_Hz_y", asd_f_yz[0]},
+               {"asd_tm_acc_peak_freq_Hz_z", asd_f_yz[1]},
+               {"rel_att_settle_2pct_s_step1", rel_settle1},
+               {"rel_att_settle_2pct_s_step2", rel_settle2}};
   if (n * h <= t_off) {  // the run ends before the return step: no step metrics (item 7)
     auto& m = r.metrics;
     m.erase(std::remove_if(m.begin(), m.end(),
@@ -535,37 +576,133 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
             m.end());
   }
   if (kind == Kind::adrc) {
-    char b[200];
-    std::snprintf(b, sizeof b, "Alg. 2 r-error %.2g / %.2g / %.2g m; Alg. 1 %.2g m", r2w[0], r2w[1], r2w[2], r1w[2]);
-    r.claims.push_back({"paper", "B.9-2 (Fig. 6) Algorithm 2 alone drifts in r, Algorithm 1 does not",
-                        "increasing over windows, >= 1e3 x Alg. 1 (PROTO 1.4e-2 -> 0.21 -> 1.05 m vs 1.3e-8)", b,
-                        r2w[0] < r2w[1] && r2w[1] < r2w[2] && r2w[2] >= 1e3 * r1w[2]});
-    std::snprintf(b, sizeof b, "Alg. 1 %.2g / %.2g N, Alg. 2 %.2g / %.2g N ([0,100) / [1000,5000) s)", rms(e_f1[0]),
-                  rms(e_f1[2]), rms(e_f2[0]), rms(e_f2[2]));
-    r.claims.push_back({"paper", "B.9-3 (Fig. 7) Algorithm 2 better early, worse later (informational)",
-                        "PROTO Alg. 1 6.0e-4 / 3.3e-5 N, Alg. 2 2.3e-3 / 1.1e-3 N: only 'worse later' reproduced", b,
-                        std::nullopt});
-    std::snprintf(b, sizeof b, "fused %.2g N, Alg. 1 %.2g N, Alg. 2 %.2g N", fusion, a1, a2);
-    r.claims.push_back({"paper", "B.9-4 (Fig. 8) fusion fixes the drift",
-                        "fused < 0.1 x both, t >= 100 s (PROTO 2.2e-8 vs 3.3e-5 vs 2.2e-4..1.1e-3 N)", b,
-                        fusion < 0.1 * a1 && fusion < 0.1 * a2});
-    std::snprintf(b, sizeof b, "%.2g (rad, m, rad)", steady);
-    r.claims.push_back({"paper", "B.9-6 (Fig. 10) steady operation, t in [2000, 10000) s",
-                        "all < 1e-6 (PROTO 1.4e-7 rad, 3.4e-8 m, 6.6e-7 rad)", b, steady < 1e-6});
-    std::snprintf(b, sizeof b, "final error %.2g rad; phi_rel peak %.2g / %.2g rad, recovered in %.0f / %.0f s", final_err,
-                  rel_peak1, rel_peak2, rel_recover1, rel_recover2);
-    r.claims.push_back({"paper", "B.9-7 (Fig. 11) attitude steps reached, relative attitude recovers",
-                        "final within 1e-5 rad, phi_rel < 1e-6 before the next step (PROTO recovery 1290 / 2080 s)", b,
-                        final_err < 1e-5 && recovered});
-    std::snprintf(b, sizeof b, "median %.2g, max %.2g at %.1f mHz (X)", asd_med, asd_max, 1e3 * asd_f);
-    r.claims.push_back({"paper", "B.9-8 (Fig. 12) TM residual acceleration below 3e-14 m s^-2/sqrt(Hz) in 1-30 mHz",
-                        "paper: max < 3e-14; spec: median below, peak at the 11 mHz drag-free loop resonance "
-                        "(PROTO median 5e-15..1e-14, peak 1e-13..1e-12): partially reproduced",
-                        b, asd_med < 3e-14});
-    std::snprintf(b, sizeof b, "%ld saturated samples, |u| max %.3g", saturated, cmd_max);
-    r.claims.push_back({"check", "B.9-9 saturation bookkeeping: commands within +-0.03",
-                        "|u_i| <= 0.03 (PROTO ~3 saturated accelerometer samples per axis at start-up)", b,
-                        cmd_max <= ap.limit});
+    char b[320];
+    // B.9-2. Rule verdict_if (the paper's words are qualitative): Algorithm 2 "accumulates" when its
+    // r-error grows window after window; Algorithm 1 is "relatively stable" when none of its later
+    // windows exceeds twice its first (no accumulation). Reproduced when both show, partly when one does.
+    {
+      const bool alg2_grows = r2w[0] < r2w[1] && r2w[1] < r2w[2];
+      const bool alg1_stable = r1w[1] <= 2.0 * r1w[0] && r1w[2] <= 2.0 * r1w[0];
+      std::snprintf(b, sizeof b, "Alg. 2 r-error %.2g / %.2g / %.2g m; Alg. 1 %.2g / %.2g / %.2g m ([0,100) / [100,1000) / [1000,5000) s)",
+                    r2w[0], r2w[1], r2w[2], r1w[0], r1w[1], r1w[2]);
+      Claim c{"paper", "B.9-2 (Fig. 6) Algorithm 2 alone drifts in r, Algorithm 1 does not",
+              "'Algorithm 1's estimate is relatively stable; Algorithm 2 accumulates estimation error noticeably as the "
+              "number of recursions grows' (Fig. 6, no numbers)",
+              b, alg2_grows && r2w[2] >= 1e3 * r1w[2]};
+      c.paper_verdict = verdict_if(alg2_grows && alg1_stable, alg2_grows || alg1_stable);
+      c.criterion = "Alg. 2 r-error increasing over the windows and >= 1e3 x Alg. 1's in [1000,5000) s (spec B.9-2; "
+                    "PROTO 1.4e-2 -> 0.21 -> 1.05 m vs 1.3e-8 m)";
+      r.claims.push_back(c);
+    }
+    // B.9-3. Rule verdict_if on the paper's two statements: "better early" (Alg. 2's f-error below
+    // Alg. 1's in [0,100) s) and "worse later" (above it in [1000,5000) s); partly when one shows.
+    {
+      const double f1e = rms(e_f1[0]), f1l = rms(e_f1[2]), f2e = rms(e_f2[0]), f2l = rms(e_f2[2]);
+      const bool early = f2e < f1e, late = f2l > f1l;
+      std::snprintf(b, sizeof b, "Alg. 1 %.2g / %.2g N, Alg. 2 %.2g / %.2g N ([0,100) / [1000,5000) s)", f1e, f1l, f2e, f2l);
+      Claim c{"paper", "B.9-3 (Fig. 7) Algorithm 2 better early, worse later",
+              "'in the initial period (accumulated error still small) Algorithm 2 estimates the disturbance better than "
+              "Algorithm 1; later the accumulated error makes its estimate worse' (Fig. 7, no numbers)",
+              b, late};
+      c.paper_verdict = verdict_if(early && late, early || late);
+      c.criterion = "'worse later' only: Alg. 2 f-error > Alg. 1's in [1000,5000) s (spec B.9-3, informational: PROTO "
+                    "reproduces only this half)";
+      if (!early) {
+        std::snprintf(b, sizeof b,
+                      "'better early' not shown: in [0,100) s Alg. 2's f-error is %.2g x Alg. 1's; the paper's "
+                      "'initial period' may be only the first seconds (spec B.9-3)",
+                      f2e / f1e);
+        c.note = b;
+      }
+      r.claims.push_back(c);
+    }
+    // B.9-4. Rule verdict_if: the paper says the fusion overcomes Algorithm 2's accumulated error
+    // and shows it against Algorithm 1 (Fig. 8). Reproduced when the fused f-error is below both
+    // copies', partly when it is below the drifting Algorithm 2's only.
+    {
+      std::snprintf(b, sizeof b, "fused %.2g N, Alg. 1 %.2g N, Alg. 2 %.2g N (t >= 100 s)", fusion, a1, a2);
+      Claim c{"paper", "B.9-4 (Fig. 8) fusion fixes the drift",
+              "'Algorithm 2 needs error correction to overcome the error accumulated over many recursions: this is the "
+              "basic motivation for fusing Algorithms 1 and 2' (Fig. 8: Algorithm 3 vs Algorithm 1; no numbers)",
+              b, fusion < 0.1 * a1 && fusion < 0.1 * a2};
+      c.paper_verdict = verdict_if(fusion < a1 && fusion < a2, fusion < a2);
+      c.criterion = "fused < 0.1 x both, t >= 100 s (spec B.9-4; PROTO 2.2e-8 vs 3.3e-5 vs 2.2e-4..1.1e-3 N)";
+      r.claims.push_back(c);
+    }
+    // B.9-6. Rule verdict_if: the paper only shows the loop "running steadily" (Fig. 10, no number):
+    // reproduced when the run never diverged (a non-finite truth throws) and every ADRC step was
+    // usable. The 1e-6 magnitude is the spec's criterion, not the paper's.
+    {
+      std::snprintf(b, sizeof b, "max of |phi_sc|, |r_rel|, |phi_rel| %.2g (rad, m, rad); %ld unusable ADRC steps",
+                    steady, nonok);
+      Claim c{"paper", "B.9-6 (Fig. 10) steady operation, t in [2000, 10000) s",
+              "'control performance when the system is running steadily' (Fig. 10; the text gives no number)", b,
+              steady < 1e-6};
+      c.paper_verdict = verdict_if(nonok == 0 && std::isfinite(steady));
+      c.criterion = "all < 1e-6 (spec B.9-6; PROTO 1.4e-7 rad, 3.4e-8 m, 6.6e-7 rad)";
+      c.note = "the paper verdict tests only that the loop runs steadily; the 1e-6 bound is the spec's";
+      r.claims.push_back(c);
+    }
+    // B.9-7. Rule verdict_if on the paper's three statements: the attitude "reaches the desired
+    // attitude" (final error within the 2 % settling band of the smallest step, both steps), the
+    // relative attitude is disturbed but recovers, and "quickly": read as |phi_rel| settling to 2 %
+    // of its peak no later than the attitude's own slowest 2 % settling after the same step.
+    // Reproduced when all three show, partly when the first two do (the paper gives no time).
+    {
+      const double band = 0.02 * step_cmd.cwiseAbs().minCoeff();
+      const bool reached = final_err <= band;
+      const double att_up = settle_up.maxCoeff(), att_down = settle_down.maxCoeff();
+      const bool quick = rel_settle1 <= att_up && rel_settle2 <= att_down;
+      std::snprintf(b, sizeof b,
+                    "final error %.2g rad; phi_rel peak %.2g / %.2g rad, below 1e-6 after %.0f / %.0f s, within 2%% of "
+                    "its peak after %.0f / %.0f s (attitude 2%% settling %.0f / %.0f s)",
+                    final_err, rel_peak1, rel_peak2, rel_recover1, rel_recover2, rel_settle1, rel_settle2, att_up, att_down);
+      Claim c{"paper", "B.9-7 (Fig. 11) attitude steps reached, relative attitude recovers",
+              "'the s/c attitude loop reaches the desired attitude well; the attitude change affects the relative "
+              "attitude, but the relative attitude loop adjusts quickly' (Fig. 11, no numbers)",
+              b, final_err < 1e-5 && recovered};
+      c.paper_verdict = verdict_if(reached && recovered && quick, reached && recovered);
+      c.criterion = "final within 1e-5 rad of the command, |phi_rel| < 1e-6 rad before the next step (spec B.9-7; "
+                    "PROTO recovery 1290 / 2080 s)";
+      if (reached && recovered && !quick)
+        c.note = "'quickly' not shown: phi_rel takes longer than the attitude itself to settle (2 % rule)";
+      r.claims.push_back(c);
+    }
+    // B.9-8. Rule verdict_at_most on the paper's bound: "within the band" means every bin of
+    // 1-30 mHz, so the band maximum over the three translational axes is compared with 3e-14.
+    // Our criterion stays the spec's median (the part the prototype reproduces).
+    {
+      const double mx[3] = {asd_max, asd_max_yz[0], asd_max_yz[1]}, fx[3] = {asd_f, asd_f_yz[0], asd_f_yz[1]};
+      int jmax = 0;
+      for (int j = 1; j < 3; ++j)
+        if (mx[j] > mx[jmax]) jmax = j;
+      std::snprintf(b, sizeof b,
+                    "max %.2g at %.1f mHz (X), %.2g at %.1f mHz (Y), %.2g at %.1f mHz (Z); median %.2g (X), %.2g (Y), "
+                    "%.2g (Z)",
+                    mx[0], 1e3 * fx[0], mx[1], 1e3 * fx[1], mx[2], 1e3 * fx[2], asd_med, asd_med_yz[0], asd_med_yz[1]);
+      Claim c{"paper", "B.9-8 (Fig. 12) TM residual acceleration below 3e-14 m s^-2/sqrt(Hz) across 1-30 mHz",
+              "'within the measurement band (1-30 mHz) the PSD of the non-conservative acceleration on the test mass is "
+              "better than LISA Pathfinder's 3e-14 m s^-2 Hz^-1/2 requirement' (Fig. 12)",
+              b, asd_med < 3e-14};
+      c.paper_verdict = verdict_at_most(mx[jmax], 3e-14);
+      c.criterion = "median over 1-30 mHz (X) < 3e-14 (spec B.9-8: the median, not the paper's max, is our criterion; "
+                    "PROTO median 5e-15..1e-14, peak 1e-13..1e-12)";
+      char nb[200];
+      std::snprintf(nb, sizeof nb,
+                    "the band max (%s) is %.2g x 3e-14, a narrow peak at %.1f mHz: the drag-free loop resonance "
+                    "sqrt(5/1050)/(2 pi) = 11 mHz driven by sensor noise (spec B.9-8)",
+                    jmax == 0 ? "X" : (jmax == 1 ? "Y" : "Z"), mx[jmax] / 3e-14, 1e3 * fx[jmax]);
+      c.note = nb;
+      r.claims.push_back(c);
+    }
+    {
+      std::snprintf(b, sizeof b, "%ld saturated accelerometer samples, |u| max %.3g", saturated, cmd_max);
+      Claim c{"check", "B.9-9 saturation bookkeeping: commands within +-0.03",
+              "|u_i| <= 0.03 (PROTO ~3 saturated accelerometer samples per axis at start-up)", b, cmd_max <= ap.limit};
+      c.criterion = "|u_i| <= actuator_limit (seed 004 §4: rho = 0.03 N m, N)";
+      c.note = cmd_max >= ap.limit ? "the limit acted: commands reached it" : "the limit never acted: every command below it";
+      r.claims.push_back(c);
+    }
   }
   if (asd_table.columns.size() == 4) {
     r.tables.push_back(asd_table);
@@ -651,9 +788,17 @@ class DragFreeScenario final : public Scenario {
       r.metrics.push_back({"rx_max_ratio_compensated_to_pid", comp.rx_max / pid.rx_max});
       char b[160];
       std::snprintf(b, sizeof b, "PID %.3g m (mean %.3g m), PID + compensation %.3g m", pid.rx_max, pid.rx_mean, comp.rx_max);
-      r.claims.push_back({"paper", "B.9-5 (Fig. 9) ADRC beats PID on X under the periodic disturbance",
-                          "ADRC max |r_x| < 1e-3 x PID's, t >= 1000 s (PROTO 2.9e-7 vs 3.69e-3 m)", b,
-                          comp.rx_max < 1e-3 * pid.rx_max});
+      Claim c{"paper", "B.9-5 (Fig. 9) ADRC beats PID on X under the periodic disturbance",
+              "'the ADRC suppresses the periodic disturbance better than the PID' (Fig. 9; PID K_P 5.55, K_I 0, K_D 9; "
+              "the ADRC is the same PID plus the disturbance compensation; no numbers)",
+              b, comp.rx_max < 1e-3 * pid.rx_max};
+      // Rule verdict_if: the paper's statement is a comparison without a number; reproduced when
+      // the compensated law's max |r_x| (t >= 1000 s) is below the PID's.
+      c.paper_verdict = verdict_if(comp.rx_max < pid.rx_max);
+      c.criterion = "ADRC max |r_x| < 1e-3 x PID's, t >= 1000 s (spec B.9-5; PROTO 2.9e-7 vs 3.69e-3 m)";
+      std::snprintf(b, sizeof b, "max |r_x| ratio ADRC / PID %.2g", comp.rx_max / pid.rx_max);
+      c.note = b;
+      r.claims.push_back(c);
     }
     return r;
   }

@@ -1,16 +1,51 @@
 // Seed 004 checklist (spec §B.9) end to end through the scenarios. Item 1 open loop (60,000
 // steps); items 2, 4, 6, 7, 8, 9 from one closed-loop run (3e5 steps, attitude steps at 1e4 and
 // 2e4 s); item 5 (PID vs PID + compensation, 5000 s); item 3 recorded. Values are pinned to the
-// spec's prototype (PROTO) where it gives them.
+// spec's prototype (PROTO) where it gives them. Each paper claim's two verdicts (issue 16) are
+// asserted: the paper verdict against the paper's own statement, and our criterion (holds), so a
+// change in the physics shows up as a changed verdict.
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include "scenario_test_util.hpp"
 
 namespace {
+using adcs::sim::Claim;
 using adcs::sim::RunResult;
 using adcs::sim::test::expect_claims_hold;
 using adcs::sim::test::metric;
 using adcs::sim::test::run;
+
+//! The one claim whose text starts with `prefix` (nullptr, and a failure, unless exactly one).
+const Claim* claim(const RunResult& r, const std::string& prefix) {
+  const Claim* found = nullptr;
+  int n = 0;
+  for (const auto& c : r.claims)
+    if (c.claim.rfind(prefix, 0) == 0) {
+      found = &c;
+      ++n;
+    }
+  EXPECT_EQ(n, 1) << "claims starting with '" << prefix << "'";
+  return n == 1 ? found : nullptr;
+}
+
+//! The claim's paper verdict as text: "reproduced", "partly", "not reproduced" or "(none)".
+std::string paper_verdict(const RunResult& r, const std::string& prefix) {
+  const Claim* c = claim(r, prefix);
+  if (!c) return "(no such claim)";
+  return c->paper_verdict ? adcs::sim::to_string(*c->paper_verdict) : "(none)";
+}
+
+//! Issue 16 form: a paper row quotes the paper and, with a verdict of ours, names its criterion;
+//! a check row has no paper verdict.
+void expect_rows_well_formed(const RunResult& r) {
+  for (const auto& c : r.claims) {
+    EXPECT_FALSE(c.paper_value.empty()) << c.claim;
+    if (c.kind == "check") EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
+    if (c.kind == "paper" && c.holds.has_value()) EXPECT_FALSE(c.criterion.empty()) << c.claim;
+  }
+}
 
 TEST(DragFree, SaturatedUpdateBeatsSkippingItem1) {
   const RunResult r = run("dragfree-estimators");
@@ -22,6 +57,8 @@ TEST(DragFree, SaturatedUpdateBeatsSkippingItem1) {
   EXPECT_NEAR(L3, 5.68e-3, 0.5e-3);
   EXPECT_NEAR(metric(r, "accel_saturated_fraction"), 0.59, 0.02);
   expect_claims_hold(r);
+  expect_rows_well_formed(r);
+  EXPECT_EQ(paper_verdict(r, "B.9-1"), "reproduced");  // both orderings of Fig. 5 shown
 }
 
 TEST(DragFree, ClosedLoopChecklistItems2To9) {
@@ -46,6 +83,28 @@ TEST(DragFree, ClosedLoopChecklistItems2To9) {
   EXPECT_LT(metric(r, "accel_saturated_samples"), 50.0);
   EXPECT_EQ(metric(r, "nonok_steps"), 0.0);
   expect_claims_hold(r);
+  expect_rows_well_formed(r);
+  // Paper verdicts (issue 16), each against the paper's own words.
+  EXPECT_EQ(paper_verdict(r, "B.9-2"), "reproduced");  // Alg. 2 accumulates, Alg. 1 stable
+  EXPECT_LE(metric(r, "alg1_pos_rmse_1000_5000"), 2.0 * metric(r, "alg1_pos_rmse_0_100"));
+  EXPECT_LE(metric(r, "alg1_pos_rmse_100_1000"), 2.0 * metric(r, "alg1_pos_rmse_0_100"));
+  // 3: "worse later" only; "better early" is not seen on [0,100) s (as in PROTO).
+  EXPECT_EQ(paper_verdict(r, "B.9-3"), "partly");
+  EXPECT_GT(metric(r, "alg2_dist_rmse_0_100"), metric(r, "alg1_dist_rmse_0_100"));
+  EXPECT_EQ(paper_verdict(r, "B.9-4"), "reproduced");
+  EXPECT_EQ(paper_verdict(r, "B.9-6"), "reproduced");
+  // 7: reached and recovered, but phi_rel settles (2 % of its peak) after the attitude does:
+  // "adjusts quickly" is not shown.
+  EXPECT_EQ(paper_verdict(r, "B.9-7"), "partly");
+  EXPECT_GT(metric(r, "rel_att_settle_2pct_s_step1"), metric(r, "att_settle_up_s_z"));
+  // 8: the paper's "below 3e-14 across 1-30 mHz" is judged on the band max (every axis): the
+  // ~11 mHz loop resonance exceeds it by more than x2 on each axis; our median criterion holds.
+  EXPECT_EQ(paper_verdict(r, "B.9-8"), "not reproduced");
+  for (const char* m : {"asd_tm_acc_max_1_30mHz", "asd_tm_acc_max_1_30mHz_y", "asd_tm_acc_max_1_30mHz_z"})
+    EXPECT_GT(metric(r, m), 2.0 * 3e-14) << m;
+  for (const char* m : {"asd_tm_acc_peak_freq_Hz_y", "asd_tm_acc_peak_freq_Hz_z"})
+    EXPECT_NEAR(metric(r, m), 0.011, 0.0015) << m;
+  EXPECT_EQ(paper_verdict(r, "B.9-9"), "(none)");  // a check of ours
 }
 
 TEST(DragFree, AdrcBeatsPidOnXItem5) {
@@ -54,5 +113,7 @@ TEST(DragFree, AdrcBeatsPidOnXItem5) {
   EXPECT_NEAR(metric(r, "rx_mean_m"), 2.48e-3, 0.2e-3);  // 12.8 mN / 5.55 N/m
   EXPECT_LT(metric(r, "rx_max_ratio_compensated_to_pid"), 1e-3);
   expect_claims_hold(r);
+  expect_rows_well_formed(r);
+  EXPECT_EQ(paper_verdict(r, "B.9-5"), "reproduced");
 }
 }  // namespace
