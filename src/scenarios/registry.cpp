@@ -27,6 +27,7 @@ std::unique_ptr<Scenario> make_flexible_fault_sensor_dropout();
 std::unique_ptr<Scenario> make_dragfree_estimators();
 std::unique_ptr<Scenario> make_dragfree_adrc();
 std::unique_ptr<Scenario> make_dragfree_pid();
+std::unique_ptr<Scenario> make_dragfree_adrc_tuned();
 std::unique_ptr<Scenario> make_se3_ptc();
 std::unique_ptr<Scenario> make_se3_ftsmc();
 std::unique_ptr<Scenario> make_se3_campaign();
@@ -58,6 +59,7 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_dragfree_estimators());
   v.push_back(make_dragfree_adrc());
   v.push_back(make_dragfree_pid());
+  v.push_back(make_dragfree_adrc_tuned());
   v.push_back(make_se3_ptc());
   v.push_back(make_se3_ftsmc());
   v.push_back(make_se3_campaign());
