@@ -39,6 +39,37 @@ inline void expect_claims_hold(const RunResult& r) {
   }
 }
 
+//! The one claim whose text starts with `prefix` (nullptr, and a failure, unless exactly one).
+inline const Claim* find_claim(const RunResult& r, const std::string& prefix) {
+  const Claim* found = nullptr;
+  int n = 0;
+  for (const Claim& c : r.claims)
+    if (c.claim.rfind(prefix, 0) == 0) {
+      found = &c;
+      ++n;
+    }
+  EXPECT_EQ(n, 1) << "claims starting with '" << prefix << "'";
+  return n == 1 ? found : nullptr;
+}
+
+//! The claim's paper verdict as text (issue 16): "reproduced", "partly", "not reproduced" or
+//! "(none)"; text, so that a failing comparison prints both sides.
+inline std::string paper_verdict(const RunResult& r, const std::string& prefix) {
+  const Claim* c = find_claim(r, prefix);
+  if (!c) return "(no such claim)";
+  return c->paper_verdict ? to_string(*c->paper_verdict) : "(none)";
+}
+
+//! Issue 16 form of every row: it quotes a paper value (or a requirement), a check has no paper
+//! verdict, and a row whose criterion is judged states the criterion.
+inline void expect_rows_well_formed(const RunResult& r) {
+  for (const Claim& c : r.claims) {
+    EXPECT_FALSE(c.paper_value.empty()) << c.claim;
+    if (c.kind == "check") EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
+    if (c.kind == "paper" && c.holds.has_value()) EXPECT_FALSE(c.criterion.empty()) << c.claim;
+  }
+}
+
 inline RunResult run(const std::string& scenario,
                      const std::vector<std::pair<std::string, std::string>>& sets = {},
                      std::uint64_t seed = 0) {

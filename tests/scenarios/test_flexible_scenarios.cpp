@@ -15,25 +15,10 @@ using adcs::sim::RunResult;
 using adcs::sim::test::metric;
 using adcs::sim::test::expect_claims_hold;
 using adcs::sim::test::run;
-
-//! The one claim whose text starts with `prefix` (nullptr, and a failure, unless exactly one).
-const Claim* claim(const RunResult& r, const std::string& prefix) {
-  const Claim* found = nullptr;
-  int n = 0;
-  for (const auto& c : r.claims)
-    if (c.claim.rfind(prefix, 0) == 0) {
-      found = &c;
-      ++n;
-    }
-  EXPECT_EQ(n, 1) << "claims starting with '" << prefix << "'";
-  return n == 1 ? found : nullptr;
-}
-
-//! The claim's paper verdict as text: "reproduced", "partly", "not reproduced" or "(none)".
-std::string paper_verdict(const RunResult& r, const std::string& prefix) {
-  const Claim* c = claim(r, prefix);
-  if (!c) return "(no such claim)";
-  return c->paper_verdict ? adcs::sim::to_string(*c->paper_verdict) : "(none)";
+using adcs::sim::test::expect_rows_well_formed;
+using adcs::sim::test::paper_verdict;
+const adcs::sim::Claim* claim(const RunResult& r, const std::string& prefix) {
+  return adcs::sim::test::find_claim(r, prefix);
 }
 
 //! The claim's criterion verdict as text: "holds", "fails" or "(none)".
@@ -41,16 +26,6 @@ std::string criterion(const RunResult& r, const std::string& prefix) {
   const Claim* c = claim(r, prefix);
   if (!c) return "(no such claim)";
   return c->holds ? (*c->holds ? "holds" : "fails") : "(none)";
-}
-
-//! Issue 16 form: a paper row quotes the paper and, with a verdict of ours, names its criterion;
-//! a check row has no paper verdict.
-void expect_rows_well_formed(const RunResult& r) {
-  for (const auto& c : r.claims) {
-    EXPECT_FALSE(c.paper_value.empty()) << c.claim;
-    if (c.kind == "check") EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
-    if (c.kind == "paper" && c.holds.has_value()) EXPECT_FALSE(c.criterion.empty()) << c.claim;
-  }
 }
 
 TEST(FlexiblePpc, PaperClaimsP1P2P3P8P9) {

@@ -15,17 +15,14 @@ using adcs::sim::test::metric;
 using adcs::sim::test::run;
 using adcs::sim::PaperVerdict;
 
-//! The paper verdict of the claim whose text starts with `prefix` (fails the test if absent).
+//! The paper verdict of the claim whose text starts with `prefix` (a failure if not exactly one).
 std::optional<PaperVerdict> verdict(const RunResult& r, const std::string& prefix) {
-  for (const auto& c : r.claims)
-    if (c.claim.rfind(prefix, 0) == 0) return c.paper_verdict;
-  ADD_FAILURE() << "no claim starting with " << prefix;
-  return std::nullopt;
+  const adcs::sim::Claim* c = adcs::sim::test::find_claim(r, prefix);
+  return c ? c->paper_verdict : std::nullopt;
 }
 bool has_note(const RunResult& r, const std::string& prefix, const std::string& words) {
-  for (const auto& c : r.claims)
-    if (c.claim.rfind(prefix, 0) == 0) return c.note.find(words) != std::string::npos;
-  return false;
+  const adcs::sim::Claim* c = adcs::sim::test::find_claim(r, prefix);
+  return c && c->note.find(words) != std::string::npos;
 }
 
 // Issue 16: the paper's own numbers, judged separately from our criteria. On A-REF the bounds

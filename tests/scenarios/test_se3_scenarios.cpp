@@ -33,17 +33,9 @@ void expect_within15(double ours, double proto, const char* what) {
   EXPECT_NEAR(ours, proto, 0.15 * proto) << what;
 }
 
-//! The one claim whose text starts with `prefix` (nullptr, with a failure, if not exactly one).
-const Claim* find_claim(const RunResult& r, const std::string& prefix) {
-  const Claim* found = nullptr;
-  int n = 0;
-  for (const Claim& c : r.claims)
-    if (c.claim.rfind(prefix, 0) == 0) found = &c, ++n;
-  EXPECT_EQ(n, 1) << "claims starting with '" << prefix << "'";
-  return n == 1 ? found : nullptr;
-}
-
 //! The claim's paper verdict is `v` (compared as text, so a failure prints both).
+using adcs::sim::test::find_claim;
+
 void expect_verdict(const RunResult& r, const std::string& prefix, PaperVerdict v) {
   const Claim* c = find_claim(r, prefix);
   if (c == nullptr) return;
