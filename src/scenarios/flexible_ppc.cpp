@@ -525,8 +525,7 @@ class FlexibleScenario final : public Scenario {
         // P5. Rule verdict_if: the paper says the steady-state accuracy of the three axes misses the
         // requirement (rho_inf = 0.005 deg): reproduced when all three axes miss it, partly when some do.
         const int missing = int((err_ss.array() > 0.005).count());
-        char o[220];
-        std::snprintf(o, sizeof o, "%s: %d of 3 axes above 0.005 deg", ours, missing);
+        const std::string o = std::string(ours) + ": " + std::to_string(missing) + " of 3 axes above 0.005 deg";
         Claim c5{"paper", "P5 ATC steady state misses 0.005 deg on all three axes",
                  "'the three-axis steady-state control accuracy cannot meet the requirement' (Figs. 2-4; rho_inf = "
                  "0.005 deg, Table 2)",
@@ -535,9 +534,10 @@ class FlexibleScenario final : public Scenario {
         c5.criterion = "the prototype's pattern: pitch > 0.005 deg, roll and yaw <= 0.005 deg over W_ss (spec B.6 P5, "
                        "informative; PROTO [2.12e-3, 5.61e-3, 1.14e-3] deg)";
         if (missing < 3) {
-          std::snprintf(o, sizeof o, "%d of 3 axes miss 0.005 deg; the worst by %.0f %%", missing,
+          char nb[96];
+          std::snprintf(nb, sizeof nb, "%d of 3 axes miss 0.005 deg; the worst by %.0f %%", missing,
                         100.0 * (err_ss.maxCoeff() / 0.005 - 1.0));
-          c5.note = o;
+          c5.note = nb;
         }
         r.claims.push_back(c5);
       }

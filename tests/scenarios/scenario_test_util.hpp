@@ -65,8 +65,12 @@ inline std::string paper_verdict(const RunResult& r, const std::string& prefix) 
 inline void expect_rows_well_formed(const RunResult& r) {
   for (const Claim& c : r.claims) {
     EXPECT_FALSE(c.paper_value.empty()) << c.claim;
-    if (c.kind == "check") EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
-    if (c.kind == "paper" && c.holds.has_value()) EXPECT_FALSE(c.criterion.empty()) << c.claim;
+    if (c.kind == "check") {
+      EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
+    }
+    if (c.kind == "paper" && c.holds.has_value()) {
+      EXPECT_FALSE(c.criterion.empty()) << c.claim;
+    }
   }
 }
 

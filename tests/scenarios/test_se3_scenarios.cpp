@@ -46,15 +46,21 @@ void expect_verdict(const RunResult& r, const std::string& prefix, PaperVerdict 
 
 void expect_no_verdict(const RunResult& r, const std::string& prefix) {
   const Claim* c = find_claim(r, prefix);
-  if (c != nullptr) EXPECT_FALSE(c->paper_verdict.has_value()) << c->claim << ": " << c->note;
+  if (c != nullptr) {
+    EXPECT_FALSE(c->paper_verdict.has_value()) << c->claim << ": " << c->note;
+  }
 }
 
 //! Issue 16 rules every row follows: checks carry no paper verdict; no fixed verdict words in the
 //! texts (the verdicts are the computed fields); a criterion is stated wherever one is judged.
 void expect_verdict_fields_consistent(const RunResult& r) {
   for (const Claim& c : r.claims) {
-    if (c.kind == "check") EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
-    if (c.holds.has_value()) EXPECT_FALSE(c.criterion.empty()) << c.claim;
+    if (c.kind == "check") {
+      EXPECT_FALSE(c.paper_verdict.has_value()) << c.claim;
+    }
+    if (c.holds.has_value()) {
+      EXPECT_FALSE(c.criterion.empty()) << c.claim;
+    }
     for (const std::string* text : {&c.claim, &c.paper_value, &c.ours, &c.criterion}) {
       EXPECT_EQ(text->find("reproduced"), std::string::npos) << c.claim << ": " << *text;
       EXPECT_EQ(text->find("not met"), std::string::npos) << c.claim << ": " << *text;
