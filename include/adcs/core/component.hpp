@@ -1,0 +1,111 @@
+#pragma once
+// The one shape of every flight component: controller, estimator, actuation stage (issue 17).
+// Checked at compile time with the C++17 detection idiom, as manif checks its minimal API, so that
+// anything built per component (no-allocation tests, fuzzers, benchmarks, instruction counts,
+// target replays) is written once over a list of component types:
+//
+//   struct C {
+//     using Params = ...; using Input = ...; using Output = ...; using Diagnostics = ...;
+//     explicit C(const Params&) noexcept;
+//     Status status() const noexcept;        // ok, or invalid_parameter (checked at construction)
+//     void reset() noexcept;                 // back to the state after construction
+//     double period_s() const noexcept;      // [s] the sample period the component runs at
+//     [[nodiscard]] Status step(const Input&, Output&, Diagnostics* = nullptr) noexcept;
+//   };
+//
+// One failure semantics for all (docs/FAILURE-POLICY.md): a step whose status is not usable()
+// writes the component's failure output (its safe command, or the last good one under
+// FailurePolicy::hold_last) and leaves its internal state untouched.
+//
+// Usage: ADCS_ASSERT_COMPONENT(MyLaw); right after the class, so a component that drifts from the
+// shape fails to compile with a message naming what is missing.
+#include <type_traits>
+#include <utility>
+
+#include "adcs/core/status.hpp"
+
+namespace adcs {
+namespace detail {
+
+template <class...>
+using void_t = void;
+
+template <class T, class = void>
+struct has_types : std::false_type {};
+template <class T>
+struct has_types<T, void_t<typename T::Params, typename T::Input, typename T::Output, typename T::Diagnostics>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct has_status : std::false_type {};
+template <class T>
+struct has_status<T, void_t<decltype(std::declval<const T&>().status())>>
+    : std::bool_constant<std::is_same_v<decltype(std::declval<const T&>().status()), Status> &&
+                         noexcept(std::declval<const T&>().status())> {};
+
+template <class T, class = void>
+struct has_reset : std::false_type {};
+template <class T>
+struct has_reset<T, void_t<decltype(std::declval<T&>().reset())>>
+    : std::bool_constant<noexcept(std::declval<T&>().reset())> {};
+
+template <class T, class = void>
+struct has_period : std::false_type {};
+template <class T>
+struct has_period<T, void_t<decltype(std::declval<const T&>().period_s())>>
+    : std::bool_constant<std::is_same_v<decltype(std::declval<const T&>().period_s()), double> &&
+                         noexcept(std::declval<const T&>().period_s())> {};
+
+template <class T, class = void>
+struct has_step : std::false_type {};
+template <class T>
+struct has_step<T, void_t<decltype(std::declval<T&>().step(std::declval<const typename T::Input&>(),
+                                                           std::declval<typename T::Output&>(),
+                                                           std::declval<typename T::Diagnostics*>()))>>
+    : std::bool_constant<
+          std::is_same_v<decltype(std::declval<T&>().step(std::declval<const typename T::Input&>(),
+                                                          std::declval<typename T::Output&>(),
+                                                          std::declval<typename T::Diagnostics*>())),
+                         Status> &&
+          noexcept(std::declval<T&>().step(std::declval<const typename T::Input&>(),
+                                           std::declval<typename T::Output&>(),
+                                           std::declval<typename T::Diagnostics*>()))> {};
+
+template <class T, class = void>
+struct has_step_without_diagnostics : std::false_type {};
+template <class T>
+struct has_step_without_diagnostics<
+    T, void_t<decltype(std::declval<T&>().step(std::declval<const typename T::Input&>(),
+                                               std::declval<typename T::Output&>()))>> : std::true_type {};
+
+template <class T, class = void>
+struct constructible_from_params : std::false_type {};
+template <class T>
+struct constructible_from_params<T, void_t<typename T::Params>>
+    : std::bool_constant<std::is_nothrow_constructible_v<T, const typename T::Params&>> {};
+
+}  // namespace detail
+
+//! True when T has the component shape above (each part is also available on its own, for the
+//! messages of ADCS_ASSERT_COMPONENT).
+template <class T>
+inline constexpr bool is_component_v =
+    detail::has_types<T>::value && detail::constructible_from_params<T>::value && detail::has_status<T>::value &&
+    detail::has_reset<T>::value && detail::has_period<T>::value && detail::has_step<T>::value &&
+    detail::has_step_without_diagnostics<T>::value;
+
+}  // namespace adcs
+
+//! Fails the build, naming the missing part, unless T has the component shape.
+#define ADCS_ASSERT_COMPONENT(T)                                                                            \
+  static_assert(::adcs::detail::has_types<T>::value,                                                        \
+                #T ": a component defines Params, Input, Output and Diagnostics");                         \
+  static_assert(::adcs::detail::constructible_from_params<T>::value,                                        \
+                #T ": a component is constructed noexcept from const Params&");                            \
+  static_assert(::adcs::detail::has_status<T>::value, #T ": Status status() const noexcept missing");       \
+  static_assert(::adcs::detail::has_reset<T>::value, #T ": void reset() noexcept missing");                 \
+  static_assert(::adcs::detail::has_period<T>::value, #T ": double period_s() const noexcept missing");     \
+  static_assert(::adcs::detail::has_step<T>::value,                                                         \
+                #T ": Status step(const Input&, Output&, Diagnostics*) noexcept missing");                 \
+  static_assert(::adcs::detail::has_step_without_diagnostics<T>::value,                                     \
+                #T ": step's Diagnostics* must default to nullptr")
