@@ -240,19 +240,19 @@ class HybridScenario final : public Scenario {
     const std::string mode = p.get_name("deviation");
     // Every value drawn from --seed, and what it derives, goes to the run's JSON (issue 15).
     std::vector<UsedValue> used;
-    const std::string from = (ctx.seed != 0 ? "drawn from --seed " : "drawn from deviation_seed ") +
-                             std::to_string(ctx.seed != 0 ? ctx.seed : static_cast<std::uint64_t>(p.get_number("deviation_seed"))) +
-                             ": ";
+    // The draw's generator seed: --seed, or deviation_seed when --seed is 0 (checked before the
+    // conversion: a negative or NaN double has no uint64 value).
+    const double deviation_seed = p.get_number("deviation_seed");
+    if (!(deviation_seed >= 0.0 && deviation_seed < 1.8e19)) throw ParamError("deviation_seed must be in [0, 1.8e19)");
+    const std::uint64_t draw_seed = ctx.seed != 0 ? ctx.seed : static_cast<std::uint64_t>(deviation_seed);
+    const std::string from =
+        std::string(ctx.seed != 0 ? "drawn from --seed " : "drawn from deviation_seed ") + std::to_string(draw_seed) + ": ";
     auto record_deviation = [&](const std::string& how) {
       used.push_back(UsedValue::matrix("dA_cs0", dev.dA_cs0, "-", how));
       used.push_back(UsedValue::matrix("dA_ct0", dev.dA_ct0, "-", how));
       used.push_back(UsedValue::matrix("dA_ws", dev.dA_ws, "-", how));
       used.push_back(UsedValue::matrix("dA_cg", dev.dA_cg, "-", how));
     };
-    // The draw's generator seed: --seed, or deviation_seed when --seed is 0.
-    const std::uint64_t draw_seed =
-        ctx.seed != 0 ? ctx.seed : static_cast<std::uint64_t>(p.get_number("deviation_seed"));
-    if (!(p.get_number("deviation_seed") >= 0.0)) throw ParamError("deviation_seed must be >= 0");
     if (mode == "random" || (mode == "D1" && ctx.seed != 0)) {  // --seed N > 0 draws Mode A
       Rng rng(draw_seed);
       const double a = p.get_number("deviation_max");

@@ -86,8 +86,9 @@ class PpcNeural {
     const double c = core_.angle_scale();
     const Vec3 e = c * k.e, e_dot = c * k.e_dot;  // law units
     const bool recover = p_.ppc.recovery == FunnelRecovery::reopen;
+    Status s = Status::ok;
     if (started_) {
-      const Status s = apply(ppc_, m, r, k, e, e_dot, out, diag);
+      s = apply(ppc_, m, r, k, e, e_dot, out, diag);
       if (s != Status::out_of_range || !recover) return s;
     }
     // First step, or a violation to recover from: change a copy of the funnel (the branches fixed
@@ -97,8 +98,8 @@ class PpcNeural {
     if (!started_) {
       const Status init = funnel.init(e);
       if (init != Status::ok && !(init == Status::out_of_range && recover)) return init;
-    }
-    Status s = apply(funnel, m, r, k, e, e_dot, out, diag);
+      s = apply(funnel, m, r, k, e, e_dot, out, diag);
+    }  // else: the funnel in force already gave out_of_range above; no need to run it again
     int reopened = 0;
     if (s == Status::out_of_range && recover && funnel.reopen(m.t, e, reopened) == Status::ok && reopened > 0)
       s = apply(funnel, m, r, k, e, e_dot, out, diag);

@@ -56,20 +56,20 @@ struct has_period<T, void_t<decltype(std::declval<const T&>().period_s())>>
     : std::bool_constant<std::is_same_v<decltype(std::declval<const T&>().period_s()), double> &&
                          noexcept(std::declval<const T&>().period_s())> {};
 
+//! The call the concept is about, spelled once: step(const Input&, Output&, Diagnostics*).
+template <class T>
+using step_call_t = decltype(std::declval<T&>().step(std::declval<const typename T::Input&>(),
+                                                     std::declval<typename T::Output&>(),
+                                                     std::declval<typename T::Diagnostics*>()));
+
 template <class T, class = void>
 struct has_step : std::false_type {};
 template <class T>
-struct has_step<T, void_t<decltype(std::declval<T&>().step(std::declval<const typename T::Input&>(),
-                                                           std::declval<typename T::Output&>(),
-                                                           std::declval<typename T::Diagnostics*>()))>>
-    : std::bool_constant<
-          std::is_same_v<decltype(std::declval<T&>().step(std::declval<const typename T::Input&>(),
+struct has_step<T, void_t<step_call_t<T>>>
+    : std::bool_constant<std::is_same_v<step_call_t<T>, Status> &&
+                         noexcept(std::declval<T&>().step(std::declval<const typename T::Input&>(),
                                                           std::declval<typename T::Output&>(),
-                                                          std::declval<typename T::Diagnostics*>())),
-                         Status> &&
-          noexcept(std::declval<T&>().step(std::declval<const typename T::Input&>(),
-                                           std::declval<typename T::Output&>(),
-                                           std::declval<typename T::Diagnostics*>()))> {};
+                                                          std::declval<typename T::Diagnostics*>()))> {};
 
 template <class T, class = void>
 struct has_step_without_diagnostics : std::false_type {};
