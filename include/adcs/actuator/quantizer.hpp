@@ -1,6 +1,6 @@
 #pragma once
 // Composite logarithmic/uniform input quantizer with transmission counting: seed 003 §1.3
-// eqs. (12)–(16), spec §A.3 (structure [P]; forms [R] Fu & Xie 2005, Zhou, Wen & Yang 2014).
+// seed 003 eqs. (12)-(16), spec §A.3 (structure [P]; forms [R] Fu & Xie 2005, Zhou, Wen & Yang 2014).
 // Per channel (parameters ρ ∈ (0,1), u_min > 0, u_s ≥ u_min, σ > 0):
 //
 //   u_j = ρ^{1−j} u_min  (j = 1..n),   δ = (1−ρ)/(1+ρ)

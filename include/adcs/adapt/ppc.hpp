@@ -1,15 +1,15 @@
 #pragma once
-// Prescribed-performance control (PPC) machinery for K independent channels, seed 002 eqs.
-// (5)-(11), spec §B.3 steps 2-7 (repaired readings B.4 #5-#8):
+// Prescribed-performance control (PPC) machinery for K independent channels, seed 002
+// eqs. (5)-(11), spec §B.3 steps 2-7 (repaired readings B.4 #5-#8):
 //
-//   ρ(t) = (ρ0 − ρ∞) e^{−kt} + ρ∞                         performance function        eq. (5)
-//   z = e/ρ must stay in (−δ, 1) if e(0) ≥ 0 (branch +), in (−1, δ) if e(0) < 0 (branch −)  eq. (6)
-//   e = ρ S(ε):  S₊(ε) = (e^ε − δ e^−ε)/(e^ε + e^−ε),  S₋(ε) = (δ e^ε − e^−ε)/(e^ε + e^−ε)   eq. (7)
-//   ε = S⁻¹(z):  ε₊ = ½ ln((z + δ)/(1 − z)),  ε₋ = ½ ln((z + 1)/(δ − z))                 eq. (9)
+//   ρ(t) = (ρ0 − ρ∞) e^{−kt} + ρ∞                         performance function        seed 002 eq. (5)
+//   z = e/ρ must stay in (−δ, 1) if e(0) ≥ 0 (branch +), in (−1, δ) if e(0) < 0 (branch −)  seed 002 eq. (6)
+//   e = ρ S(ε):  S₊(ε) = (e^ε − δ e^−ε)/(e^ε + e^−ε),  S₋(ε) = (δ e^ε − e^−ε)/(e^ε + e^−ε)   seed 002 eq. (7)
+//   ε = S⁻¹(z):  ε₊ = ½ ln((z + δ)/(1 − z)),  ε₋ = ½ ln((z + 1)/(δ − z))                 seed 002 eq. (9)
 //   r = ε_z/ρ,  q = ė − e ρ̇/ρ,  ε̇ = r q,  ṙ = ε_zz ż/ρ − ε_z ρ̇/ρ²,  ż = (ė − z ρ̇)/ρ
 //
 // A controller that wants ṡ for s = λε + ε̇ also needs q̇ = ë + q_dot_offset with
-// q_dot_offset = −(ė ρ̇ ρ + e ρ̈ ρ − e ρ̇²)/ρ² (= −d/dt(e ρ̇/ρ)), returned here (eq. (11)).
+// q_dot_offset = −(ė ρ̇ ρ + e ρ̈ ρ − e ρ̇²)/ρ² (= −d/dt(e ρ̇/ρ)), returned here (seed 002 eq. (11)).
 //
 // At a funnel edge ε is ±∞. transform() never takes the logarithm there: it returns
 // out_of_range with the output untouched, or — in the optional robust mode — clamps z into the
@@ -52,19 +52,19 @@ inline PerformanceSample evaluate(const PerformanceFunction& f, double t) noexce
 //! Which side of zero the error starts (and, with δ = 0, stays) on.   seed 002 eq. (6)
 enum class PpcBranch : signed char { positive = 1, negative = -1 };
 
-//! Forward map z = S(ε) of eq. (7) (for tests and plots).
+//! Forward map z = S(ε) of seed 002 eq. (7) (for tests and plots).
 inline double ppc_S(double eps, PpcBranch b, double delta) noexcept {
   const double ep = std::exp(eps), em = std::exp(-eps);
   return b == PpcBranch::positive ? (ep - delta * em) / (ep + em) : (delta * ep - em) / (ep + em);
 }
 
-//! Signed distance of z to the nearer edge of the open interval of eq. (6): > 0 inside.
+//! Signed distance of z to the nearer edge of the open interval of seed 002 eq. (6): > 0 inside.
 inline double ppc_margin(double z, PpcBranch b, double delta) noexcept {
   return b == PpcBranch::positive ? std::fmin(z + delta, 1.0 - z) : std::fmin(z + 1.0, delta - z);
 }
 
 struct PpcInverse {
-  double eps = 0.0;     //!< [-] ε = S⁻¹(z)                    eq. (9)
+  double eps = 0.0;     //!< [-] ε = S⁻¹(z)                    seed 002 eq. (9)
   double eps_z = 0.0;   //!< [-] ∂ε/∂z (> 0)                   spec §B.3 step 5
   double eps_zz = 0.0;  //!< [-] ∂²ε/∂z²
 };
@@ -192,7 +192,7 @@ class PrescribedPerformance {
       s.r_dot(i) = inv.eps_zz * z_dot / rho - inv.eps_z * rd / (rho * rho);
       s.q(i) = e_dot(i) - e(i) * rd / rho;                                      // step 7
       s.eps_dot(i) = s.r(i) * s.q(i);
-      s.q_dot_offset(i) = -(e_dot(i) * rd * rho + e(i) * rdd * rho - e(i) * rd * rd) / (rho * rho);  // eq. (11)
+      s.q_dot_offset(i) = -(e_dot(i) * rd * rho + e(i) * rdd * rho - e(i) * rd * rd) / (rho * rho);  // seed 002 eq. (11)
     }
     // Absurd errors (|e| ~ 1e300) can still overflow the products above: refuse, never emit Inf.
     if (!all_finite(s.eps_dot) || !all_finite(s.r_dot) || !all_finite(s.q_dot_offset) || !all_finite(s.q))

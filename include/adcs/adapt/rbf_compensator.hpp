@@ -1,10 +1,10 @@
 #pragma once
 // Neural compensation of a lumped disturbance with an adaptive robust term — the part seed 002's
-// PPATC (eq. (12)) and its ATC comparison law share (spec §B.3 steps 11-14):
+// PPATC (seed 002 eq. (12)) and its ATC comparison law share (spec §B.3 steps 11-14):
 //
 //   h = h(x),  D̂ = Ŵᵀ h                                   RBF estimate        (steps 11-12)
-//   robust = μ̂² s/(μ̂ ‖s‖ + σ)                             bound compensation  (eq. (12))
-//   Ŵ̇_i = τ_wi (s_i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s‖ − γ μ̂)     adaptation          (eqs. (13)-(14))
+//   robust = μ̂² s/(μ̂ ‖s‖ + σ)                             bound compensation  (seed 002 eq. (12))
+//   Ŵ̇_i = τ_wi (s_i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s‖ − γ μ̂)     adaptation          (seed 002 eqs. (13)-(14))
 //
 // The estimates are integrated over each control period with s and h held (exact ZOH steps of
 // rbf_network.hpp / bound_estimator.hpp). μ̂ ≥ 0 is an invariant (set_state refuses μ̂ < 0).
@@ -72,8 +72,8 @@ class RbfCompensator {
       mu_next = mu_;
       return;
     }
-    W_next = rbf_weight_step<NH, NO>(W_, o.h, s, p_.tau_w, p_.beta, T);   // eq. (13)
-    mu_next = bound_estimate_step(mu_, s.norm(), p_.tau_mu, p_.gamma, T);  // eq. (14)
+    W_next = rbf_weight_step<NH, NO>(W_, o.h, s, p_.tau_w, p_.beta, T);   // seed 002 eq. (13)
+    mu_next = bound_estimate_step(mu_, s.norm(), p_.tau_mu, p_.gamma, T);  // seed 002 eq. (14)
   }
   void commit(const Mat<NH, NO>& W_next, double mu_next) noexcept {
     W_ = W_next;

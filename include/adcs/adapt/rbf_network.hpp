@@ -4,7 +4,7 @@
 //
 //   h_j(x) = exp(−‖x − c_j‖² / (2 b_j²)),  j = 1..NH                          (RBF layer)
 //   D̂ = Ŵᵀ h(x)                                 (NO outputs, Ŵ is NH x NO)   (step 12)
-//   Ŵ̇_i = τ_i (s_i h − β Ŵ_i)                   (column i, output i)         eq. (13)
+//   Ŵ̇_i = τ_i (s_i h − β Ŵ_i)                   (column i, output i)         seed 002 eq. (13)
 //
 // The weight law is integrated over one control period T with s and h held (ZOH), exactly:
 //   Ŵ_i⁺ = e^{−τ_i β T} Ŵ_i + (1 − e^{−τ_i β T})/β · s_i h     (β > 0, via expm1)
@@ -57,7 +57,7 @@ class RbfLayer {
   Status status_ = Status::ok;
 };
 
-//! One period of eq. (13) for all columns (see the header comment). tau (NO) >= 0, beta >= 0.
+//! One period of seed 002 eq. (13) for all columns (see the header comment). tau (NO) >= 0, beta >= 0.
 template <int NH, int NO>
 Mat<NH, NO> rbf_weight_step(const Mat<NH, NO>& W, const Vec<NH>& h, const Vec<NO>& s,
                             const Vec<NO>& tau, double beta, double T) noexcept {

@@ -3,9 +3,9 @@
 // gains (spec §B.7): a nonlinear PID (Han's fal) per loop plus compensation of the estimated
 // disturbances and of the modelled s/c-TM coupling, clipped to the actuator cube [−ρ, ρ]³:
 //
-//   T_Csc = I_sc T_Csc0 − T̂_Dsc                                                        (44)
-//   F_Csc = −F_Csc0 + m_sc ĥ_idf − F̂_Dsc,   ĥ_idf = −(K_trans r̂ + D_trans ṙ̂)/m_tm         (45)
-//   T_Ctm = I_tm T_Ctm0 − T̂_Dtm − I_tm ĥ_itm, ĥ_itm = I_tm⁻¹(K_rot φ̂_rel + D_rot φ̇̂_rel)   (46)
+//   T_Csc = I_sc T_Csc0 − T̂_Dsc                                                        seed 004 eq. (44)
+//   F_Csc = −F_Csc0 + m_sc ĥ_idf − F̂_Dsc,   ĥ_idf = −(K_trans r̂ + D_trans ṙ̂)/m_tm         seed 004 eq. (45)
+//   T_Ctm = I_tm T_Ctm0 − T̂_Dtm − I_tm ĥ_itm, ĥ_itm = I_tm⁻¹(K_rot φ̂_rel + D_rot φ̇̂_rel)   seed 004 eq. (46)
 //   X_0 = k_p fal(e_p) + k_i fal(e_i) + k_d fal(e_d) componentwise, fal(e, 0.5, 0.01)
 //
 // The integral is e_i = h Σ e_p with the integral gains halved by default (spec §B.7 [D]: the
@@ -118,18 +118,18 @@ class DragFreeAdrc {
       F0(a) = nlpid(p_.drag_free, e_p_df(a), e_i_df(a), -r_dot(a));
       Ttm0(a) = nlpid(p_.tm_attitude, -phr(a), 0.0, -phr_dot(a));
     }
-    const Vec3 h_idf = -(pl.K_trans * r + pl.D_trans * r_dot) / pl.m_tm;      // (45)
+    const Vec3 h_idf = -(pl.K_trans * r + pl.D_trans * r_dot) / pl.m_tm;      // seed 004 eq. (45)
     const Vec3 h_itm_Itm = pl.K_rot * phr + pl.D_rot * phr_dot;               // I_tm ĥ_itm (46)
     Vec<9> cmd;
-    cmd.segment<3>(0) = pl.I_sc * T0 - x_hat.segment<3>(Ix::T_Dsc);            // (44)
-    cmd.segment<3>(3) = -F0 + pl.m_sc * h_idf - F_D_hat;                       // (45)
+    cmd.segment<3>(0) = pl.I_sc * T0 - x_hat.segment<3>(Ix::T_Dsc);            // seed 004 eq. (44)
+    cmd.segment<3>(3) = -F0 + pl.m_sc * h_idf - F_D_hat;                       // seed 004 eq. (45)
     Pid<1> pid_next = pid_x_;
     if (p_.x_law != DragFreeXLaw::nlpid) {  // Fig. 9 baselines: F_x = −(K_P e_p + K_I e_i + K_D e_d)
       Vec<1> out;
       if (pid_next.step(Vec<1>(e_p_df(0)), Vec<1>(-r_dot(0)), out) != Status::ok) return Status::out_of_range;
       cmd(3) = -out(0) + (p_.x_law == DragFreeXLaw::pid_compensated ? pl.m_sc * h_idf(0) - F_D_hat(0) : 0.0);
     }
-    cmd.segment<3>(6) = pl.I_tm * Ttm0 - x_hat.segment<3>(Ix::T_Dtm) - h_itm_Itm;  // (46)
+    cmd.segment<3>(6) = pl.I_tm * Ttm0 - x_hat.segment<3>(Ix::T_Dtm) - h_itm_Itm;  // seed 004 eq. (46)
     if (!all_finite(cmd)) return Status::out_of_range;
     const int clipped = saturate_each<9>(cmd, Vec<9>::Constant(p_.limit));     // Note 2.5: [−ρ, ρ]³
     e_i_att_ = e_i_att;

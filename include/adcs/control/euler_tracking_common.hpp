@@ -143,7 +143,7 @@ class EulerTrackingCore {
   }
 
   //! Steps 11-14: u = B⁻¹ (law − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s) / c with `law` the model part in law
-  //! units, then one period of eqs. (13)-(14). Commits the estimates and the command only if
+  //! units, then one period of seed 002 eqs. (13)-(14). Commits the estimates and the command only if
   //! everything is finite (out_of_range otherwise, nothing changed).
   [[nodiscard]] Status compensate_and_adapt(const Kinematics& k, const Vec3& s, const Vec3& law,
                                             EulerTrackingCommand& out, Compensation& c) noexcept {
@@ -152,7 +152,7 @@ class EulerTrackingCore {
     x << kDegPerRad * k.e, kDegPerRad * k.e_dot;  // RBF input in degrees (spec B.4 #18)
     const auto o = comp_.evaluate(x, s);                                           // steps 11-12
     const Vec3 bracket = law - o.D_hat - o.robust - g_.K.cwiseProduct(s);
-    const Vec3 u = k.affine.B_inv * (bracket / angle_scale());                     // step 13, eq. (12)
+    const Vec3 u = k.affine.B_inv * (bracket / angle_scale());                     // step 13, seed 002 eq. (12)
     Mat<7, 3> W_next;
     double mu_next;
     comp_.propose(o, s, g_.control_period_s, W_next, mu_next);                     // step 14

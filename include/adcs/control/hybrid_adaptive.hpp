@@ -2,9 +2,9 @@
 // Adaptive MIMO attitude tracking for a hybrid CMG + reaction-wheel spacecraft with installation
 // deviations (seed 001, Ye, Sun & Liu 2016), spec §A.3 steps 1-14:
 //   σ̈ = F*(σ,σ̇) + G*(σ,σ̇) u,  u = [γ̇ (M) rad/s; Ω̇_w (N) rad/s²]           seed 001 eq. (8)
-//   F* = F*n + Y_F Θ_F,  G* = G*n + Y_G Θ_G  (Θ_F = H_I^Δ, Θ_Gk = axis deviations)  eqs. (15)-(20)
-//   u = X⁺ v,  X = G*n + Y_G Θ̂_G,  v = −K e − F*n − Y_F Θ̂_F + σ̈_d                   eq. (24)
-//   Θ̂̇_F = α_F Y_Fᵀ B0ᵀ P e,  Θ̂̇_Gk = Proj(Θ̂_Gk, Y_Gkᵀ B0ᵀ P e u_k)               eqs. (25)-(26)
+//   F* = F*n + Y_F Θ_F,  G* = G*n + Y_G Θ_G  (Θ_F = H_I^Δ, Θ_Gk = axis deviations)  seed 001 eqs. (15)-(20)
+//   u = X⁺ v,  X = G*n + Y_G Θ̂_G,  v = −K e − F*n − Y_F Θ̂_F + σ̈_d                   seed 001 eq. (24)
+//   Θ̂̇_F = α_F Y_Fᵀ B0ᵀ P e,  Θ̂̇_Gk = Proj(Θ̂_Gk, Y_Gkᵀ B0ᵀ P e u_k)               seed 001 eqs. (25)-(26)
 // K from the closed-loop eigenvalues and P from A_1ᵀP + PA_1 = −Q_L are computed once at
 // construction; step() is the per-sample arithmetic, estimates integrated by explicit Euler at
 // the control period (spec §A.3 step 13) with the discrete radial safeguard (counted).
@@ -181,14 +181,14 @@ class HybridAdaptive {
     // Steps 4-5: drift and its momentum regressor.
     const Mat3 Y_F = -GJ * skew(w) * mrp_to_dcm(sigma);             // seed 001 eq. (16)
     const Vec3 F_n = G_dot * w + Y_F * p_.H_I_n;                    // seed 001 eq. (15)
-    // Steps 6-8: X = G*n + Y_G Θ̂_G column by column (eqs. (17)-(20)).
+    // Steps 6-8: X = G*n + Y_G Θ̂_G column by column (seed 001 eqs. (17)-(20)).
     const Vec<M> cos_g = m.gamma.array().cos(), sin_g = m.gamma.array().sin();  // once per step
     Mat<3, L> X;
     for (int i = 0; i < M; ++i) {
       const double c = cos_g(i), s = sin_g(i);
-      const Vec3 t_n = c * p_.nominal.A_ct0.col(i) - s * p_.nominal.A_cs0.col(i);   // eq. (3)
+      const Vec3 t_n = c * p_.nominal.A_ct0.col(i) - s * p_.nominal.A_cs0.col(i);   // seed 001 eq. (3)
       const Vec3 dt = c * theta_c_.col(i).template head<3>() - s * theta_c_.col(i).template tail<3>();
-      X.col(i) = -p_.nominal.h_cw(i) * (GJ * (t_n + dt));                            // eq. (19)
+      X.col(i) = -p_.nominal.h_cw(i) * (GJ * (t_n + dt));                            // seed 001 eq. (19)
     }
     for (int j = 0; j < N; ++j)
       X.col(M + j) = -p_.nominal.I_wws(j) * (GJ * (p_.nominal.A_ws.col(j) + theta_w_.col(j)));
@@ -224,7 +224,7 @@ class HybridAdaptive {
         scale_u(M + j) = normalized_step_scale(k * p_.alpha_G * GJ2 * Iu * Iu, lim);
       }
     }
-    const Vec3 theta_F_next = theta_F_ + (T * p_.alpha_F * scale_F) * (Y_F.transpose() * PBe);  // eq. (25)
+    const Vec3 theta_F_next = theta_F_ + (T * p_.alpha_F * scale_F) * (Y_F.transpose() * PBe);  // seed 001 eq. (25)
     Mat<6, M> theta_c_next;
     Mat<3, N> theta_w_next;
     int active_blocks = 0;
@@ -232,7 +232,7 @@ class HybridAdaptive {
     const Vec3 GJtPBe = GJ.transpose() * PBe;
     for (int i = 0; i < M; ++i) {
       const double h = p_.nominal.h_cw(i);
-      Vec6 Phi;  // Y_cGiᵀ PBe u_i, Y_cGi = −h_cw,i GJ [c I3, −s I3]        eqs. (19), (26)
+      Vec6 Phi;  // Y_cGiᵀ PBe u_i, Y_cGi = −h_cw,i GJ [c I3, −s I3]        seed 001 eqs. (19), (26)
       Phi << -h * cos_g(i) * GJtPBe, h * sin_g(i) * GJtPBe;
       Vec6 next;
       if (!update_block<6>(theta_c_.col(i), Phi * (u(i) * scale_u(i)), next, active_blocks, safeguard))
@@ -240,7 +240,7 @@ class HybridAdaptive {
       theta_c_next.col(i) = next;
     }
     for (int j = 0; j < N; ++j) {
-      const Vec3 Phi = (-p_.nominal.I_wws(j) * u(M + j) * scale_u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, eq. (20)
+      const Vec3 Phi = (-p_.nominal.I_wws(j) * u(M + j) * scale_u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, seed 001 eq. (20)
       Vec3 next;
       if (!update_block<3>(theta_w_.col(j), Phi, next, active_blocks, safeguard))
         return Status::out_of_range;
@@ -290,7 +290,7 @@ class HybridAdaptive {
   }
 
  private:
-  //! One Θ_G block over a control period: θ⁺ = θ + T Proj(θ, Φ) (eq. (26), explicit Euler,
+  //! One Θ_G block over a control period: θ⁺ = θ + T Proj(θ, Φ) (seed 001 eq. (26), explicit Euler,
   //! spec §A.3 step 13), then the radial safeguard to β + δ. False on a projection failure.
   template <int K>
   bool update_block(const Vec<K>& theta, const Vec<K>& Phi, Vec<K>& next, int& active_blocks,

@@ -1,6 +1,6 @@
 #pragma once
 // Signed powers and the C¹ non-singular switching function of the seed 003 backstepping law
-// (§2.3 eqs. (29)–(35), spec §A.5 "Per-channel functions" [R]; also the FTSMC surface, §A.6):
+// (§2.3 seed 003 eqs. (29)-(35), spec §A.5 "Per-channel functions" [R]; also the FTSMC surface, §A.6):
 //
 //   sig^a(z) = sign(z)|z|^a
 //   S(z;ε)   = sig^{1−p}(z)                  |z| > ε

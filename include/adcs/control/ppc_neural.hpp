@@ -2,10 +2,10 @@
 // Prescribed-performance adaptive RBF attitude tracking (PPATC) for a flexible spacecraft,
 // seed 002 eq. (12), spec §B.3 steps 1-15, in x-y-z Euler angles:
 //
-//   e = ϑ − ϑ_d,  ε = S⁻¹(e/ρ) (adapt/ppc.hpp),  s = λ ε + ε̇                    eq. (10)
-//   u = B⁻¹ ( −A − R⁻¹V − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s ),  B⁻¹ = J G             eq. (12)
-//   (R⁻¹V)_i = (λ_i + ṙ_i/r_i) q_i − (ė_i ρ̇_i ρ_i + e_i ρ̈_i ρ_i − e_i ρ̇_i²)/ρ_i² − ϑ̈_d,i   eq. (11)
-//   Ŵ̇_i = τ_wi (s_i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s‖ − γ μ̂),  h = h((180/π)[e; ė])      eqs. (13)-(14)
+//   e = ϑ − ϑ_d,  ε = S⁻¹(e/ρ) (adapt/ppc.hpp),  s = λ ε + ε̇                    seed 002 eq. (10)
+//   u = B⁻¹ ( −A − R⁻¹V − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s ),  B⁻¹ = J G             seed 002 eq. (12)
+//   (R⁻¹V)_i = (λ_i + ṙ_i/r_i) q_i − (ė_i ρ̇_i ρ_i + e_i ρ̈_i ρ_i − e_i ρ̇_i²)/ρ_i² − ϑ̈_d,i   seed 002 eq. (11)
+//   Ŵ̇_i = τ_wi (s_i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s‖ − γ μ̂),  h = h((180/π)[e; ė])      seed 002 eqs. (13)-(14)
 //
 // giving ṡ = R (D̄ − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s). The paper's law is continuous; here it is a
 // discrete-time object at control_period_s with the estimates stepped inside step() (exact ZOH
@@ -135,10 +135,10 @@ class PpcNeural {
     const Status ts = ppc.transform(m.t, e, e_dot, ps);                             // steps 2-7
     if (!usable(ts)) return ts;
     const Vec3& lambda = p_.gains.lambda;
-    const Vec3 s = lambda.cwiseProduct(ps.eps) + ps.eps_dot;                        // eq. (10)
+    const Vec3 s = lambda.cwiseProduct(ps.eps) + ps.eps_dot;                        // seed 002 eq. (10)
     const Vec3 RinvV = (lambda + ps.r_dot.cwiseQuotient(ps.r)).cwiseProduct(ps.q) + ps.q_dot_offset -
-                       c * r.angles_ddot;                                            // eq. (11)
-    const Vec3 law = -c * k.affine.A - RinvV;                                        // eq. (12), model part
+                       c * r.angles_ddot;                                            // seed 002 eq. (11)
+    const Vec3 law = -c * k.affine.A - RinvV;                                        // seed 002 eq. (12), model part
     EulerTrackingCore::Compensation comp;
     const Status cs = core_.compensate_and_adapt(k, s, law, out, comp);             // steps 11-14
     if (diag) {

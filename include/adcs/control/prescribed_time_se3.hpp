@@ -1,16 +1,16 @@
 #pragma once
 // Backstepping practical prescribed-time control on SE(3) with input-quantization compensation
 // and an adaptive estimate of the squared disturbance bound (BsPdTC), seed 003 §2.3 eqs.
-// (29)-(47) as reconstructed in spec §A.5 (the paper's display equations were lost):
+// seed 003 eqs. (29)-(47) as reconstructed in spec §A.5 (the paper's display equations were lost):
 //
 //   z1 = η,   c = π/(pT)
-//   α(z1) = −K2 z1 − c [Λ S(z1; ε1) + Υ sig^{1+p}(z1)]                                  (29)-(35)
+//   α(z1) = −K2 z1 − c [Λ S(z1; ε1) + Υ sig^{1+p}(z1)]                                  seed 003 eqs. (29)-(35)
 //   z2 = G(z1) ξ_e − α,   α̇ = diag(∂α_i/∂z1i) G ξ_e
 //   u1 = Ξ0 G⁻¹ [−Ġξ_e − G F0 + α̇ − K3 z2 − c (Λ' S(z2; ε2) + Υ' sig^{1+p}(z2))]
 //   b = Ξ0⁻¹ Gᵀ z2,   u2 = −ζ ⊙ tanh(ζ ⊙ b / ε_q)   (ζ_i ≥ ϖ_i of the quantizer)
 //   u3 = −(ψ̂/(2a²)) Ξ0 G⁻¹ z2
 //   ψ̂̇ = γ ‖z2‖²/(2a²) − σ1 ψ̂ − σ2 ψ̂³   (forward Euler at the control rate, ψ̂ ≥ 0)
-//   u = u1 + u2 + u3                                                                     (47)
+//   u = u1 + u2 + u3                                                                     seed 003 eq. (47)
 //
 // The prescribed time T is one parameter. The command u = [M; F] (body, N m; N) goes through
 // sat → Q → actuator outside (actuator/quantizer.hpp, saturate_then_quantize). Per spec §A.5's
@@ -133,7 +133,7 @@ class PrescribedTimeSe3 {
     for (int i = 0; i < 6; ++i) u2(i) = -p_.zeta(i) * std::tanh(p_.zeta(i) * b(i) / p_.eps_q);
     const double two_a2 = 2.0 * p_.a * p_.a;
     const Vec6 u3 = -(psi_hat_ / two_a2) * se3_apply_inertia(nominal_.params(), e.G.inverse_times(z2));
-    const Vec6 u_new = u1 + u2 + u3;  // (47)
+    const Vec6 u_new = u1 + u2 + u3;  // seed 003 eq. (47)
     const double psi_dot = p_.gamma * z2.squaredNorm() / two_a2 - p_.sigma1 * psi_hat_ -
                            p_.sigma2 * psi_hat_ * psi_hat_ * psi_hat_;
     const double psi_new = std::fmax(0.0, psi_hat_ + p_.h * psi_dot);

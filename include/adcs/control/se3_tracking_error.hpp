@@ -3,9 +3,9 @@
 // baseline) act on, spec §A.2.3-§A.2.4 (seed 003 eqs. (6)-(11)):
 //
 //   g_e = g_d⁻¹ g:  C_e = C_dᵀ C,  R_e = C_dᵀ (R − R_d)
-//   ξ_e = ξ − Ad_{g_e⁻¹} ξ_d,  η = [θ; β] = log(g_e)^∨,  η̇ = G(η) ξ_e                   (8)
+//   ξ_e = ξ − Ad_{g_e⁻¹} ξ_d,  η = [θ; β] = log(g_e)^∨,  η̇ = G(η) ξ_e                   seed 003 eq. (8)
 //   ξ̇_e = F0 + Ξ0⁻¹ u_c + d,
-//   F0 = Ξ0⁻¹ (ad*_ξ Ξ0 ξ + M_g(J0, m0)) + ad_{ξ_e} Ad_{g_e⁻¹} ξ_d − Ad_{g_e⁻¹} ξ̇_d         (11)
+//   F0 = Ξ0⁻¹ (ad*_ξ Ξ0 ξ + M_g(J0, m0)) + ad_{ξ_e} Ad_{g_e⁻¹} ξ_d − Ad_{g_e⁻¹} ξ̇_d         seed 003 eq. (11)
 //
 // with the nominal inertia Ξ0 = diag(J0, m0 I3) and the gravity wrench of the nominal model at
 // the chaser's pose. Also G⁻¹ and Ġ ξ_e (the derivative of η ↦ G(η) ξ_e along η̇), which both
@@ -54,7 +54,7 @@ struct Se3TrackingError {
   rhs.head<3>() -= w.cross(p0.J_B * w);            // ad*_ξ Ξ0 ξ = [−ω×J0ω; −m0 ω×v]
   rhs.tail<3>() -= p0.m * w.cross(x.v_B);
   Vec6 F0 = stack3(nominal.J_inv() * rhs.head<3>(), rhs.tail<3>() / p0.m);
-  F0 += se3_ad_times(xi_e, xi_d_e) - se3_Ad_inv_times(g_e, d.xi_dot());  // (11)
+  F0 += se3_ad_times(xi_e, xi_d_e) - se3_Ad_inv_times(g_e, d.xi_dot());  // seed 003 eq. (11)
   if (!all_finite(k.eta) || !k.G.finite() || !all_finite(k.G_dot_xi) || !all_finite(F0))
     return Status::out_of_range;
   out.eta = k.eta;

@@ -1,7 +1,7 @@
 #pragma once
 // Algorithm 1 (ESKF) for the 27-state drag-free model, run as the two uncoupled blocks the model
 // has (spec §B.2.2 index map): the attitude chain φ_sc, φ̇_sc, T_Dsc, φ_rel, φ̇_rel, T_Dtm
-// (18 states, outputs φ_sc and φ_rel; eq. (3) couples φ_rel to the spacecraft's torques) and the
+// (18 states, outputs φ_sc and φ_rel; seed 004 eq. (3) couples φ_rel to the spacecraft's torques) and the
 // translation r, ṙ, F_Dsc (9 states, output r_rel). Nothing in A_d, B_d S B_dᵀ, B_e, C_d, R or
 // P_0 = 0.01 I couples them, so this is Algorithm 1 exactly (see PartitionedEskf) at about a third
 // of the work of the 27-state matrices. Construction rejects parameters that do couple them.

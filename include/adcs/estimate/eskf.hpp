@@ -5,7 +5,7 @@
 //
 //   X_{k+1} = A_d X_k + B_d (u_k + w_k) + B_e G_k,   Y_k = C_d X_k + d_k,   E[G_{k,i}²] ≤ q_i
 //
-// time update   X̂⁻ = A_d X̂ + B_d u + B_e Ĝ,  Ĝ_i = clip(Δf̄_i, ±√q_i)                    eq. (9)
+// time update   X̂⁻ = A_d X̂ + B_d u + B_e Ĝ,  Ĝ_i = clip(Δf̄_i, ±√q_i)                    seed 004 eq. (9)
 //               P⁻ = (1+θ) A_d P A_dᵀ + (1+1/θ) 4 B_e (l diag q) B_eᵀ + B_d S B_dᵀ
 // measurement   K = P⁻Cᵀ(C P⁻ Cᵀ + R)⁻¹ (Cholesky solve, never an inverse), Joseph form for P.
 // N states, NU inputs, NL disturbance channels (l), NY measurements. No heap; noexcept.
@@ -85,7 +85,7 @@ class Eskf {
 
   //! Time update with the applied input u_{k−1} and the nominal disturbance increment Δf̄
   //! (default 0: the nominal model f̄ = 0 of spec §B.8 gives Ĝ = 0). non_finite_input leaves
-  //! the state untouched.   Algorithm 1 time update, eq. (9)
+  //! the state untouched.   Algorithm 1 time update, seed 004 eq. (9)
   [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
     if (status_ != Status::ok) return status_;
     const Covariance APA = propagated_covariance();
@@ -128,7 +128,7 @@ class Eskf {
                                          double theta, Candidate& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(u) || !all_finite(delta_f_nominal)) return Status::non_finite_input;
-    const Vec<NL> G_hat = delta_f_nominal.cwiseMax(-sqrt_q_).cwiseMin(sqrt_q_);  // eq. (9)
+    const Vec<NL> G_hat = delta_f_nominal.cwiseMax(-sqrt_q_).cwiseMin(sqrt_q_);  // seed 004 eq. (9)
     out.x = A_nz_.mul_by_transpose(Mat<1, N>(x_.transpose())).transpose();  // A_d x (sparse)
     out.x.noalias() += p_.B_d * u;
     out.x.noalias() += p_.B_e * G_hat;
@@ -198,7 +198,7 @@ class Eskf {
     return Status::ok;
   }
 
-  //! Overwrites K states in place (fusion, Algorithm 3, eqs. (40)-(41)): x(idx) = x_o, the rows and
+  //! Overwrites K states in place (fusion, Algorithm 3, seed 004 eqs. (40)-(41)): x(idx) = x_o, the rows and
   //! columns idx of P zeroed, P(idx, idx) = P_o. Indices must be distinct and in range
   //! (invalid_parameter) and the values finite (non_finite_input); nothing changes otherwise.
   template <int K>

@@ -1,15 +1,15 @@
 #pragma once
 // Fusion of the 27-state ESKF (Algorithm 1) with the per-axis saturated-accelerometer filters
-// (Algorithm 2), seed 004 Algorithm 3 (spec §B.6, eqs. (35)-(43)), for axis j:
+// (Algorithm 2), seed 004 Algorithm 3 (spec §B.6, seed 004 eqs. (35)-(43)), for axis j:
 //
 //   Γ (3 x 27) selects r_j, ṙ_j, F_Dsc,j (indices 9+j, 12+j, 15+j), Γ⁺ = Γᵀ (orthonormal rows)
-//   X̂_1 = Γ X̂¹, P_1 = Γ P¹ Γᵀ;  X̂_o = Λ1 X̂_1 + Λ2 X̂_2 = [r̂ (Alg. 1); ṙ̂ (Alg. 1); f̂ (Alg. 2)]  (35)-(38)
+//   X̂_1 = Γ X̂¹, P_1 = Γ P¹ Γᵀ;  X̂_o = Λ1 X̂_1 + Λ2 X̂_2 = [r̂ (Alg. 1); ṙ̂ (Alg. 1); f̂ (Alg. 2)]  seed 004 eqs. (35)-(38)
 //   P_o = Λ1 P_1 Λ1 + Λ2 P_2 Λ2 (default [D], block-diagonal, PSD) or the literal Λ1 P_1 + Λ2 P_2
-//         made symmetric and PSD (option)                                                  (39)
-//   X̂¹ ← (I − ΓᵀΓ) X̂¹ + Γ⁺ X̂_o,  P¹ ← (I − ΓᵀΓ) P¹ (I − ΓᵀΓ)ᵀ + Γ⁺ P_o Γ⁺ᵀ                (40)-(41)
-//   X̂_2 ← X̂_o,  P_2 ← P_o                                                                (42)-(43)
+//         made symmetric and PSD (option)                                                  seed 004 eq. (39)
+//   X̂¹ ← (I − ΓᵀΓ) X̂¹ + Γ⁺ X̂_o,  P¹ ← (I − ΓᵀΓ) P¹ (I − ΓᵀΓ)ᵀ + Γ⁺ P_o Γ⁺ᵀ                seed 004 eqs. (40)-(41)
+//   X̂_2 ← X̂_o,  P_2 ← P_o                                                                seed 004 eqs. (42)-(43)
 //
-// (41) as printed zeroes the cross-covariance between the three fused states and the other 24;
+// seed 004 eq. (41) as printed zeroes the cross-covariance between the three fused states and the other 24;
 // kept. The selection is applied by index, in place (exactly Γ⁺ = Γᵀ; tests compare with the
 // matrix form).
 #include "adcs/core/status.hpp"
@@ -45,11 +45,11 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
     return Status::invalid_parameter;
   const std::array<int, 3> idx{DragFreeIndex::r + axis, DragFreeIndex::r_dot + axis, DragFreeIndex::F_Dsc + axis};
   const Vec<27>& x1 = alg1.state();
-  const Vec3 X1(x1(idx[0]), x1(idx[1]), x1(idx[2]));         // (35)
-  const Mat3 P1s = alg1.covariance_of<3>(idx);               // (36)
+  const Vec3 X1(x1(idx[0]), x1(idx[1]), x1(idx[2]));         // seed 004 eq. (35)
+  const Mat3 P1s = alg1.covariance_of<3>(idx);               // seed 004 eq. (36)
   const Vec3& X2 = alg2.state();
   const Mat3& P2 = alg2.covariance();
-  const Vec3 Xo(X1(0), X1(1), X2(2));                        // (37)-(38)
+  const Vec3 Xo(X1(0), X1(1), X2(2));                        // seed 004 eqs. (37)-(38)
   Mat3 Po;
   if (mode == FusedCovariance::block_diagonal) {
     Po.setZero();
@@ -60,8 +60,8 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
     keep_psd<3>(Po);
   }
   if (!all_finite(Xo) || !all_finite(Po) || !all_finite(x1) || !all_finite(P1s)) return Status::non_finite_input;
-  if (alg1.replace_substate<3>(idx, Xo, Po) != Status::ok) return Status::non_finite_input;  // (40)-(41)
-  return alg2.set_estimate(Xo, Po);                          // (42)-(43)
+  if (alg1.replace_substate<3>(idx, Xo, Po) != Status::ok) return Status::non_finite_input;  // seed 004 eqs. (40)-(41)
+  return alg2.set_estimate(Xo, Po);                          // seed 004 eqs. (42)-(43)
 }
 
 }  // namespace adcs

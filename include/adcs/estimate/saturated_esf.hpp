@@ -1,11 +1,11 @@
 #pragma once
 // Extended-state filter with a saturation-constrained scalar measurement, seed 004 Algorithm 2
-// (spec §B.5, eqs. (15)-(34)): one instance per accelerometer axis, state X = [r; ṙ; f],
+// (spec §B.5, seed 004 eqs. (15)-(34)): one instance per accelerometer axis, state X = [r; ṙ; f],
 //
 //   X_{k+1} = A_d X_k + B_d (u_k + w_k) + B_e G_k,   y_k = C X_k + D (u_k + w_k) + d_k,
-//   y_c,k = sat(y_k, y̲, ȳ)                                                            (13)-(14)
+//   y_c,k = sat(y_k, y̲, ȳ)                                                            seed 004 eqs. (13)-(14)
 //
-// The time update is Algorithm 1's with l = 1 (eqs. (18)-(19)). The measurement update is the
+// The time update is Algorithm 1's with l = 1 (seed 004 eqs. (18)-(19)). The measurement update is the
 // Kalman one while y_c is inside the range (31)-(32); when it sits on a bound the reading only
 // says y ≥ ȳ (or ≤ y̲), and the update uses the moments of the predicted y truncated to that
 // half-line (33)-(34), evaluated stably far in the tail (math/truncated_normal.hpp).
@@ -28,12 +28,12 @@ enum class SaturationUpdate {
 
 //! The axis model (A_d, B_d, C, D) and R_a have no default: NaN until set (drag_free_axis_model()
 //! gives seed 004's), so a forgotten one is refused. B_e = [0; 0; 1] is the structure of the
-//! state [r; ṙ; f] (eq. (12)); q = 0, S = 0 (no increment bound, no input noise) and the
+//! state [r; ṙ; f] (seed 004 eq. (12)); q = 0, S = 0 (no increment bound, no input noise) and the
 //! unbounded range are real choices; X̂_0, P_0 are spec §B.5's.
 struct SaturatedEsfParams {
   Mat3 A_d = Mat3::Constant(kUnset);                  //!< discrete state matrix (ZOH), no default
   Vec3 B_d = Vec3::Constant(kUnset);                  //!< discrete input column, no default
-  Vec3 B_e = Vec3(0.0, 0.0, 1.0);                     //!< disturbance-increment selector (eq. (12))
+  Vec3 B_e = Vec3(0.0, 0.0, 1.0);                     //!< disturbance-increment selector (seed 004 eq. (12))
   Eigen::RowVector3d C = Eigen::RowVector3d::Constant(kUnset);  //!< measurement row (11), no default
   double D = kUnset;                                  //!< direct input feedthrough (11), no default
   double q = 0.0;                                     //!< bound on E[G²] (>= 0)
@@ -52,8 +52,8 @@ class SaturatedEsf {
   using Params = SaturatedEsfParams;
 
   explicit SaturatedEsf(const Params& p) noexcept : p_(p) {
-    Q1_ = 4.0 * p_.q * p_.B_e * p_.B_e.transpose();  // (18), l = 1
-    Q2_ = p_.S * p_.B_d * p_.B_d.transpose();        // (19)
+    Q1_ = 4.0 * p_.q * p_.B_e * p_.B_e.transpose();  // seed 004 eq. (18), l = 1
+    Q2_ = p_.S * p_.B_d * p_.B_d.transpose();        // seed 004 eq. (19)
     const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C) &&
                     std::isfinite(p_.D) && finite_nonnegative(p_.q) && finite_nonnegative(p_.S) &&
                     finite_positive(p_.R_a) && p_.y_min < p_.y_max && all_finite(p_.x0) &&
@@ -75,7 +75,7 @@ class SaturatedEsf {
     saturated_updates_ = 0;
   }
 
-  //! Time update with the applied input u_{k−1} (Algorithm 1's with l = 1; Ĝ from eq. (9)).
+  //! Time update with the applied input u_{k−1} (Algorithm 1's with l = 1; Ĝ from seed 004 eq. (9)).
   [[nodiscard]] Status predict(double u, double delta_f_nominal = 0.0) noexcept {
     if (status_ != Status::ok) return status_;
     if (!std::isfinite(u) || !std::isfinite(delta_f_nominal)) return Status::non_finite_input;
@@ -97,7 +97,7 @@ class SaturatedEsf {
   //! Measurement update with the (possibly saturated) reading y_c and the applied input u_k.
   //! ok (in range), saturated (set-valued or skipped update used), non_finite_input /
   //! singular (innovation variance not > 0 or not finite) / out_of_range (state untouched).
-  //! eqs. (21)-(34)
+  //! seed 004 eqs. (21)-(34)
   [[nodiscard]] Status update(double y_c, double u) noexcept {
     if (status_ != Status::ok) return status_;
     if (!std::isfinite(y_c) || !std::isfinite(u)) return Status::non_finite_input;
@@ -109,22 +109,22 @@ class SaturatedEsf {
     const double y_pred = p_.C.dot(x_) + p_.D * u;                  // ŷ⁻
     const double R_eff = p_.R_a + p_.D * p_.D * p_.S;               // R_a + D² S
     const double CPC = std::fmax(p_.C * P_ * p_.C.transpose(), 0.0);  // [D] clamp at >= 0
-    const double S_y = CPC + R_eff;                                 // (27)
+    const double S_y = CPC + R_eff;                                 // seed 004 eq. (27)
     if (!(S_y > 0.0) || !std::isfinite(S_y)) return Status::singular;  // nothing applied: not usable()
-    const Vec3 K = P_ * p_.C.transpose() / S_y;                     // (22)
+    const Vec3 K = P_ * p_.C.transpose() / S_y;                     // seed 004 eq. (22)
     const Mat3 IKC = Mat3::Identity() - K * p_.C;
-    Mat3 P_new = IKC * P_ * IKC.transpose() + R_eff * K * K.transpose();  // (21) P*
+    Mat3 P_new = IKC * P_ * IKC.transpose() + R_eff * K * K.transpose();  // seed 004 eq. (21) P*
     Vec3 x_new;
     if (!upper && !lower) {
-      x_new = x_ + K * (y_c - y_pred);                              // (31), (32)
+      x_new = x_ + K * (y_c - y_pred);                              // seed 004 eqs. (31), (32)
     } else {
       const double sd = std::sqrt(S_y);
       // Standardised distance of the bound from the prediction, towards the admissible side.
       const double t = upper ? (p_.y_max - y_pred) / sd : (y_pred - p_.y_min) / sd;
       const TruncatedMoments m = upper_truncated_std_normal(t);
       const double mean = upper ? y_pred + sd * m.mean : y_pred - sd * m.mean;  // E[y | Y^k]
-      x_new = x_ + K * (mean - y_pred);                             // (33)
-      P_new += (S_y * m.variance) * K * K.transpose();              // (34)
+      x_new = x_ + K * (mean - y_pred);                             // seed 004 eq. (33)
+      P_new += (S_y * m.variance) * K * K.transpose();              // seed 004 eq. (34)
     }
     if (!all_finite(x_new) || !all_finite(P_new)) return Status::out_of_range;
     keep_psd<3>(P_new);

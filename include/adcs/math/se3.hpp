@@ -1,6 +1,6 @@
 #pragma once
 // SE(3) primitives and the exponential-coordinate error kinematics of seed 003 (spec §A.2.1 and
-// §A.2.3, paper eqs (6)-(9)): the group g = (C, R), hat/vee, Ad, ad, ad*, the SO(3)/SE(3)
+// §A.2.3, seed 003 eqs. (6)-(9)): the group g = (C, R), hat/vee, Ad, ad, ad*, the SO(3)/SE(3)
 // exponential and logarithm, the left Jacobian V(θ), and the blocks A(θ), T(θ,β), G(η), G⁻¹(η)
 // of η̇ = G(η) ξ_e together with their time derivatives (Ȧ, Ġ of spec §A.5).
 //
@@ -296,7 +296,7 @@ inline Vec6 se3_log(const Se3& g) noexcept {
 }
 
 // =============================================================================================
-// Error kinematics η̇ = G(η) ξ_e. spec §A.2.3, paper eq. (8)
+// Error kinematics η̇ = G(η) ξ_e. spec §A.2.3, seed 003 eq. (8)
 //
 // G(η) = Σ B_n/n! (−ad_η)ⁿ (inverse right Jacobian of SE(3)). −ad_η is block lower-triangular
 // with equal diagonal blocks −θ×, so G = [[A, 0], [T, A]] with T(θ,β) = d/ds A(θ + sβ)|₀.
@@ -327,7 +327,7 @@ inline Mat3 se3_T(const Vec3& theta, const Vec3& beta) noexcept {
                             se3_gamma(phi));
 }
 
-//! G(η) = [[A(θ), 0], [T(θ,β), A(θ)]], η̇ = G(η) ξ_e. spec §A.2.3, paper eq. (8)
+//! G(η) = [[A(θ), 0], [T(θ,β), A(θ)]], η̇ = G(η) ξ_e. spec §A.2.3, seed 003 eq. (8)
 inline Mat6 se3_G(const Vec6& eta) noexcept {
   const Vec3 theta = eta.head<3>();
   const Vec3 beta = eta.tail<3>();
@@ -422,7 +422,7 @@ inline Vec3 se3_T_dot_times(const Vec3& theta, const Vec3& beta, const Vec3& the
 
 }  // namespace detail
 
-//! G(η) = [[A, 0], [T, A]] kept as its 3×3 blocks, with A⁻¹ (spec §A.2.3, paper eq. (8)): a
+//! G(η) = [[A, 0], [T, A]] kept as its 3×3 blocks, with A⁻¹ (spec §A.2.3, seed 003 eq. (8)): a
 //! law only multiplies vectors by G, Gᵀ and G⁻¹, and the block-triangular form does each in
 //! 2-3 3×3 products instead of a dense 6×6 product or an explicit −A⁻¹TA⁻¹.
 //! Like an Eigen matrix, a default-constructed one is uninitialised (identity() gives G(0) = I):
@@ -496,7 +496,7 @@ inline Se3ErrorKinematics se3_error_kinematics(const Se3& g, const Vec6& xi) noe
   const Vec3 w = xi.head<3>(), v = xi.tail<3>();
   const Vec3 theta_dot = out.G.A * w;
   const Vec3 beta_dot = out.G.T * w + out.G.A * v;
-  out.eta_dot = stack3(theta_dot, beta_dot);                                // (8)
+  out.eta_dot = stack3(theta_dot, beta_dot);                                // seed 003 eq. (8)
   // Ġ ξ = [Ȧ ω; Ṫ ω + Ȧ v] with Ȧ = T(θ, θ̇), spec §A.5.
   out.G_dot_xi = stack3(detail::se3_T_times(theta, theta_dot, w, k.alpha, k.gamma),
                         detail::se3_T_dot_times(theta, beta, theta_dot, beta_dot, w, k) +

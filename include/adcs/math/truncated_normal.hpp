@@ -1,6 +1,6 @@
 #pragma once
 // Moments of a truncated standard normal N(0,1): the measurement update of the saturated
-// accelerometer filter (seed 004 §B.5 Algorithm 2, eqs (29), (30), (33), (34)). With the
+// accelerometer filter (seed 004 §B.5 Algorithm 2, seed 004 eqs. (29), (30), (33), (34)). With the
 // innovation standardised, t = (ybar - yhat^-)/sqrt(S_y), the filter needs
 //   lambda(t) = Z(t)/Q(t)       (inverse Mills ratio, mean of N(0,1) on [t, inf))
 //   v(t)      = 1 + t lambda - lambda^2  (its variance)
@@ -77,12 +77,12 @@ inline UpperTail upper_tail(double t) noexcept {
     return {0.0, -t, 1.0};
   }
   if (t <= kTruncNormalSeriesT) {
-    // λ = Z(t) / (0.5 erfc(t/√2)): erfc directly, never 1 − Φ.   seed 004 §B.5, eq. (29)
+    // λ = Z(t) / (0.5 erfc(t/√2)): erfc directly, never 1 − Φ.   seed 004 §B.5, seed 004 eq. (29)
     const double z = std_normal_pdf(t);
     const double q = 0.5 * std::erfc(t * kInvSqrt2);
     const double lambda = z / q;
     if (t < kTruncNormalContinuedFractionT) {
-      const double v = 1.0 + t * lambda - lambda * lambda;  // seed 004 §B.5, eq. (30)
+      const double v = 1.0 + t * lambda - lambda * lambda;  // seed 004 §B.5, seed 004 eq. (30)
       return {lambda, lambda - t, v};
     }
     // Same v without cancellation [D, accuracy]: Laplace's continued fraction of the Mills ratio,
@@ -162,7 +162,7 @@ inline TruncatedMoments two_sided_upper(double a, double b) noexcept {
     m.variance = h * h * (s2 / s0);
   } else if (a <= 0.0) {
     // Contains the bulk: kappa > 1 with a <= 0 <= c forces h > 0.81, i.e. at least [0, 1.63],
-    // so Φ(b) − Φ(a) > 0.44 and v > 0.18: the closed forms of seed 004 eqs (29), (30) are benign.
+    // so Φ(b) − Φ(a) > 0.44 and v > 0.18: the closed forms of seed 004 eqs. (29), (30) are benign.
     const double za = std_normal_pdf(a);
     const double zb = std_normal_pdf(b);
     const double d = 0.5 * (std::erf(b * kInvSqrt2) - std::erf(a * kInvSqrt2));  // Φ(b) − Φ(a)
@@ -198,7 +198,7 @@ inline TruncatedMoments two_sided_upper(double a, double b) noexcept {
 }  // namespace detail
 
 //! Mean and variance of y ~ N(0,1) conditioned on y >= t (seed 004 §B.5, saturation at the
-//! upper limit: E[y|Y^k] = yhat^- + sqrt(S_y) λ(t), cov = S_y v(t), eqs (33), (34)).
+//! upper limit: E[y|Y^k] = yhat^- + sqrt(S_y) λ(t), cov = S_y v(t), seed 004 eqs. (33), (34)).
 //! Evaluation (seed 004 §B.5, mandatory stable form): t < -37 → {0, 1}; t <= 25 → λ = Z/(erfc/2)
 //! (v from 1 + tλ − λ² below t = 4, from the continued fraction above); t > 25 → asymptotic
 //! series. Relative error against 150-digit mpmath on [−37, 1e12]: λ <= 1.1e-13 (Z/Q, t <= 25)
@@ -223,7 +223,7 @@ inline TruncatedMoments lower_truncated_std_normal(double t) noexcept {
   return {-u.mean, u.variance};
 }
 
-//! Mean and variance of y ~ N(0,1) conditioned on a <= y <= b (seed 004 eqs (29), (30)), with
+//! Mean and variance of y ~ N(0,1) conditioned on a <= y <= b (seed 004 eqs. (29), (30)), with
 //! a < b; a may be −inf and b +inf. Accurate in the far tails where Φ(b) − Φ(a) underflows
 //! (e.g. [40, 41] or [−41, −40]) and for narrow intervals (variance → (b − a)²/12 without
 //! cancellation). Against 400-digit mpmath on ~5000 intervals (centres to ±1e8, widths 1e-9..1e2):

@@ -2,10 +2,10 @@
 // Drag-free satellite: spacecraft (s/c) attitude, s/c-to-test-mass (TM) relative displacement and
 // TM-to-s/c relative attitude, seed 004 eqs. (1)-(3) (spec §B.2), small-angle, linear:
 //
-//   φ̈_sc  = I_sc⁻¹ (T_Csc + w_TCsc + T_Dsc)                                                (1)
-//   r̈_rel = −(K_trans/m_tm) r_rel − (D_trans/m_tm) ṙ_rel − (F_Csc + w_FCsc + F_Dsc)/m_sc     (2)
+//   φ̈_sc  = I_sc⁻¹ (T_Csc + w_TCsc + T_Dsc)                                                seed 004 eq. (1)
+//   r̈_rel = −(K_trans/m_tm) r_rel − (D_trans/m_tm) ṙ_rel − (F_Csc + w_FCsc + F_Dsc)/m_sc     seed 004 eq. (2)
 //   φ̈_rel = I_tm⁻¹K_rot φ_rel + I_tm⁻¹D_rot φ̇_rel + I_tm⁻¹(T_Ctm + w_TCtm + T_Dtm)
-//           − I_sc⁻¹(T_Csc + w_TCsc + T_Dsc)                                               (3)
+//           − I_sc⁻¹(T_Csc + w_TCsc + T_Dsc)                                               seed 004 eq. (3)
 //
 // (printed "+" on K_rot, D_rot kept: negative electrostatic stiffness, spec B.10 #13), in the
 // extended form (6) with the disturbances f = [T_Dsc; F_Dsc; T_Dtm] appended after each loop
@@ -103,13 +103,13 @@ inline DragFreeContinuous drag_free_continuous(const DragFreeParams& p) noexcept
   auto A = [&](int i, int j) { return m.A.block<3, 3>(3 * i, 3 * j); };
   auto B = [&](int i, int j) { return m.B.block<3, 3>(3 * i, 3 * j); };
   A(0, 1) = I;
-  A(1, 2) = Isc_inv;                                                         // (1)
+  A(1, 2) = Isc_inv;                                                         // seed 004 eq. (1)
   A(3, 4) = I;
-  A(4, 3) = -p.K_trans / p.m_tm;                                             // (2)
+  A(4, 3) = -p.K_trans / p.m_tm;                                             // seed 004 eq. (2)
   A(4, 4) = -p.D_trans / p.m_tm;
   A(4, 5) = -I / p.m_sc;
   A(6, 7) = I;
-  A(7, 6) = Itm_inv * p.K_rot;                                               // (3), printed "+"
+  A(7, 6) = Itm_inv * p.K_rot;                                               // seed 004 eq. (3), printed "+"
   A(7, 7) = Itm_inv * p.D_rot;
   A(7, 2) = -Isc_inv;
   A(7, 8) = Itm_inv;
@@ -158,7 +158,7 @@ struct DragFreeAxisModel {
 [[nodiscard]] inline Status drag_free_axis_model(const DragFreeParams& p, int axis, DragFreeAxisModel& out) noexcept {
   if (axis < 0 || axis > 2 || !valid(p)) return Status::invalid_parameter;
   const double K = p.K_trans(axis, axis), D = p.D_trans(axis, axis);
-  Mat3 A = Mat3::Zero();  // (12): [[A_o, B_o],[0, 0]]
+  Mat3 A = Mat3::Zero();  // seed 004 eq. (12): [[A_o, B_o],[0, 0]]
   A(0, 1) = 1.0;
   A(1, 0) = -K / p.m_tm;
   A(1, 1) = -D / p.m_tm;
@@ -170,7 +170,7 @@ struct DragFreeAxisModel {
   const Status s = zoh_discretize<3, 1>(A, B, p.h, m.A_d, B_d);
   if (s != Status::ok) return s;
   m.B_d = B_d;
-  m.C << K / p.m_tm, D / p.m_tm, 1.0 / p.m_sc;  // (11) C = [C_o, D_o]
+  m.C << K / p.m_tm, D / p.m_tm, 1.0 / p.m_sc;  // seed 004 eq. (11) C = [C_o, D_o]
   m.D = 1.0 / p.m_sc;
   out = m;
   return Status::ok;
@@ -178,7 +178,7 @@ struct DragFreeAxisModel {
 
 //! True accelerometer reading before noise and saturation, axis j, from the 27-state X and the
 //! applied force plus its noise (F_Csc + w_FCsc): y = (K_trans r + D_trans ṙ)_j/m_tm +
-//! (F_Csc + w_FCsc + F_Dsc)_j/m_sc (= −r̈_rel,j; full 3 x 3 K_trans, D_trans).   eq. (11)
+//! (F_Csc + w_FCsc + F_Dsc)_j/m_sc (= −r̈_rel,j; full 3 x 3 K_trans, D_trans).   seed 004 eq. (11)
 inline double drag_free_accelerometer(const DragFreeParams& p, const Vec<27>& X, const Vec3& F_applied,
                                       int axis) noexcept {
   using Ix = DragFreeIndex;

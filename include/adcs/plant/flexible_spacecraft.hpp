@@ -11,7 +11,7 @@
 //   ω̇  = M_eff⁻¹ [ u + d − ω × J ω − Σ_l ω × F_sl η̇_l + Σ_l F_sl (2 ξ_l Ω_l η̇_l + Ω_l² η_l) ]
 //   η̈_l = −2 ξ_l Ω_l η̇_l − Ω_l² η_l − F_slᵀ ω̇
 //
-// and the Euler–Lagrange quantities of eq. (4) for the controllers and the tests:
+// and the Euler–Lagrange quantities of seed 002 eq. (4) for the controllers and the tests:
 //
 //   ϑ̈ = A + B u + D̄,  A = −F Ġ ϑ̇ − F J⁻¹ (ω × J ω),  B = F J⁻¹,  B⁻¹ = J G,
 //   D̄ = F J⁻¹ [ d − Σ_l (F_sl η̈_l + ω × F_sl η̇_l) ],   J* = Gᵀ J G,  C = Gᵀ J Ġ − Gᵀ (J G ϑ̇)× G.
@@ -170,7 +170,7 @@ class FlexibleSpacecraft {
       xdot.template segment<NM>(6 + l * NM) = ed;
       xdot.template segment<NM>(6 + kModalSize + l * NM) =
           -2.0 * p_.xi[l].cwiseProduct(p_.Omega[l]).cwiseProduct(ed) -
-          p_.Omega[l].cwiseAbs2().cwiseProduct(e) - p_.F_s[l].transpose() * w_dot;  // eq. (2)
+          p_.Omega[l].cwiseAbs2().cwiseProduct(e) - p_.F_s[l].transpose() * w_dot;  // seed 002 eq. (2)
     }
   }
 

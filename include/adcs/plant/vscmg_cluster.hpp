@@ -335,7 +335,7 @@ class VscmgCtrlPlant {
     return Vec3(J_n_ * omega_BN_B(x) +
                 p_.truth.internal_momentum(gamma(x), Vec<M>::Zero(), Omega_w(x)));
   }
-  //! H_N = C(sigma)^T h [N m s] (conserved by eq. (5)).
+  //! H_N = C(sigma)^T h [N m s] (conserved by seed 001 eq. (5)).
   Vec3 momentum_N(const State& x) const noexcept {
     return mrp_to_dcm(sigma_BN(x)).transpose() * momentum_B(x);
   }
