@@ -107,6 +107,7 @@ StepTable attitude_steps() noexcept;  // bench/steps_attitude.cpp
 StepTable seed002_steps() noexcept;   // bench/steps_seed002.cpp
 StepTable seed003_steps() noexcept;   // bench/steps_seed003.cpp
 StepTable seed004_steps() noexcept;   // bench/steps_seed004.cpp
+StepTable component_steps() noexcept;  // bench/steps_components.cpp: the one list of components
 
 }  // namespace adcs::bench
 

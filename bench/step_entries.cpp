@@ -16,7 +16,7 @@
 namespace adcs::bench {
 int run_step_count(int argc, char** argv) {
   // In the order of the fixtures' headers: seed 004 before seed 003, as adcs-stepcount always listed them.
-  const StepTable tables[] = {attitude_steps(), seed002_steps(), seed004_steps(), seed003_steps()};
+  const StepTable tables[] = {attitude_steps(), seed002_steps(), seed004_steps(), seed003_steps(), component_steps()};
   if (argc >= 2 && std::strcmp(argv[1], "--list") == 0) {
     for (const StepTable& t : tables)
       for (int i = 0; i < t.size; ++i) std::printf("%s\n", t.entries[i].name);

@@ -5,6 +5,7 @@
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "adcs/reference/sinusoidal_rate.hpp"
 #include "step_fixtures_common.hpp"
@@ -15,9 +16,8 @@ namespace adcs::bench {
 //! MrpPd::step() (the controller of rigid-rw-mrp-pd).
 struct MrpPdStep {
   MrpPd<4> ctrl{params()};
-  MrpPd<4>::Measurement m;
-  AttitudeReference r;
-  MrpPdCommand out;
+  MrpPd<4>::Input in;
+  BodyTorque out;
   double k = 0.0;
   static MrpPdParams<4> params() {
     MrpPdParams<4> p;
@@ -26,36 +26,37 @@ struct MrpPdStep {
     p.J_rw_B = Vec3(900, 800, 600).asDiagonal();
     p.G_s_B = four_wheel_axes();
     p.J_s.setConstant(0.05);
+    p.period_s = 0.1;  // [s] rigid-rw-mrp-pd's control_period_s (validated only)
     return p;
   }
   MrpPdStep() {
-    m.sigma_BN << 0.1, -0.2, 0.3;
-    m.omega_BN_B << 0.01, 0.002, -0.003;
-    m.Omega << 10, 20, 30, 40;
-    r.sigma_RN << 0.1, 0.2, -0.3;
+    in.state.sigma_BN << 0.1, -0.2, 0.3;
+    in.state.omega_BN_B << 0.01, 0.002, -0.003;
+    in.Omega_rad_s << 10, 20, 30, 40;
+    in.reference.sigma_RN << 0.1, 0.2, -0.3;
   }
   void operator()() noexcept {
-    m.sigma_BN(0) = 0.1 + 1e-9 * k;
+    in.state.sigma_BN(0) = 0.1 + 1e-9 * k;
     k += 1.0;
-    escape(ctrl.step(m, r, out));
-    escape(out.L_r_B);
+    escape(ctrl.step(in, out));
+    escape(out.torque_B_Nm);
   }
 };
 
-//! RwTorqueAllocator::allocate() (precomputed pseudo-inverse + scaling).
+//! RwTorqueAllocator::step() (precomputed pseudo-inverse + scaling).
 struct RwAllocationStep {
   RwTorqueAllocator<4> alloc{params()};
-  Vec3 L{0.05, -0.3, 0.1};
-  Vec<4> us;
+  BodyTorque L{Vec3(0.05, -0.3, 0.1)};
+  WheelTorques<4> us;
   static RwAllocationParams<4> params() {
     RwAllocationParams<4> p;
     p.G_s_B = four_wheel_axes();
     return p;
   }
   void operator()() noexcept {
-    L(0) += 1e-12;
-    escape(alloc.allocate(L, us));
-    escape(us);
+    L.torque_B_Nm(0) += 1e-12;
+    escape(alloc.step(L, us));
+    escape(us.u_s_Nm);
   }
 };
 
@@ -64,9 +65,8 @@ struct RwAllocationStep {
 //! adaptation with projection. Estimates reset every 4096 steps to stay near nominal.
 struct HybridAdaptiveStep {
   HybridAdaptive<4, 3> ctrl;
-  HybridAdaptive<4, 3>::Measurement m;
-  MrpReferenceSample r = SinusoidalRateReference{}.sample(123.0, Vec3(0.29, -0.21, 0.1));
-  HybridAdaptive<4, 3>::Command out;
+  HybridAdaptive<4, 3>::Input in;
+  HybridAdaptive<4, 3>::Output out;
   double k = 0.0;
   static HybridAdaptive<4, 3>::Params params(AdaptationStep a) {
     HybridAdaptive<4, 3>::Params p;
@@ -75,15 +75,16 @@ struct HybridAdaptiveStep {
     return p;
   }
   explicit HybridAdaptiveStep(AdaptationStep a = AdaptationStep::explicit_euler) : ctrl(params(a)) {
-    m.sigma_BN << 0.3, -0.2, 0.1;
-    m.omega_BN_B << 0.01, -0.02, 0.015;
-    m.gamma << 0.1, -0.2, 0.15, 0.05;
+    in.state.sigma_BN << 0.3, -0.2, 0.1;
+    in.state.omega_BN_B << 0.01, -0.02, 0.015;
+    in.actuators.gamma_rad << 0.1, -0.2, 0.15, 0.05;
+    in.reference = SinusoidalRateReference{}.sample(123.0, Vec3(0.29, -0.21, 0.1));
   }
   void operator()() noexcept {
-    m.gamma(0) = 0.1 + 1e-9 * k;
+    in.actuators.gamma_rad(0) = 0.1 + 1e-9 * k;
     k += 1.0;
-    escape(ctrl.step(m, r, out));
-    escape(out.u);
+    escape(ctrl.step(in, out));
+    escape(out);
     if (static_cast<long>(k) % 4096 == 0) ctrl.reset();
   }
 };

@@ -8,6 +8,7 @@
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
 #include "step_fixtures_common.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace adcs::bench {
 
@@ -18,23 +19,34 @@ template <class Law>
 struct Se3Step {
   Se3ScenarioParams sp;
   Se3Spacecraft target_model{se3_target_params(sp)};
-  Se3SpacecraftState target, chaser;
+  Se3SpacecraftState target;
   Law law;
-  Vec6 u;
-  explicit Se3Step(const typename Law::Params& p) : law(p, se3_chaser_nominal_params(sp)) {
+  Se3TrackingInput in;  // chaser state and the desired state of the tick
+  Wrench out;
+  //! The law's parameters with the nominal chaser model it was constructed with before issue 17.
+  static typename Law::Params with_nominal(typename Law::Params p, const Se3ScenarioParams& sp) {
+    p.nominal = se3_chaser_nominal_params(sp);
+    return p;
+  }
+  explicit Se3Step(const typename Law::Params& p) : law(with_nominal(p, sp)) {
     if (se3_target_initial_state(sp, target) != Status::ok) std::abort();
-    chaser = se3_chaser_initial_state(target, kSe3InitialPoses[0]);
+    in.state = se3_chaser_initial_state(target, kSe3InitialPoses[0]);
   }
   void operator()() noexcept {
-    chaser.R_N(0) += 1e-9;
-    Se3DesiredState d;
-    escape(se3_desired_state(target_model, target, sp, d));
-    escape(law.step(chaser, d, u));
-    escape(u);
+    in.state.R_N(0) += 1e-9;
+    escape(se3_desired_state(target_model, target, sp, in.desired));
+    escape(law.step(in, out));
+    escape(out);
   }
 };
+//! spec Table 1 gains; ζ = 1.05 ϖ of the seed 003 quantizer (the default before issue 17).
+inline PrescribedTimeSe3Params se3_ptc_params() {
+  PrescribedTimeSe3Params p;
+  p.zeta = quantization_compensation_gain(seed003_quantizer_params());
+  return p;
+}
 struct SE3PrescribedTimeStep : Se3Step<PrescribedTimeSe3> {
-  SE3PrescribedTimeStep() : Se3Step(PrescribedTimeSe3Params{}) {}
+  SE3PrescribedTimeStep() : Se3Step(se3_ptc_params()) {}
 };
 struct SE3FtsmcStep : Se3Step<FtsmcSe3> {
   SE3FtsmcStep() : Se3Step(FtsmcSe3Params{}) {}

@@ -30,6 +30,7 @@ struct DragFreeModel {
     e1.q.head<6>().setConstant(8.538e-13);
     e1.S = (n.sigma_F_sc * n.sigma_F_sc) * Mat<9, 9>::Identity();
     e1.R = (n.sigma_pos * n.sigma_pos) * Mat<9, 9>::Identity();
+    e1.period_s = p.period_s;  // h, the period A_d, B_d were discretised at
     for (int j = 0; j < 3; ++j) {
       DragFreeAxisModel m;
       if (drag_free_axis_model(p, j, m) != Status::ok) std::abort();
@@ -42,49 +43,63 @@ struct DragFreeModel {
       e2[j].R_a = n.sigma_acc * n.sigma_acc;
       e2[j].y_min = p.accel_min;
       e2[j].y_max = p.accel_max;
+      e2[j].period_s = p.period_s;
     }
   }
 };
 
-//! Algorithm 1 (ESKF, two uncoupled blocks): predict + update.
+//! Algorithm 1 (ESKF, two uncoupled blocks): step() = predict + update.
 struct DragFreeEskfStep {
   DragFreeModel model;
   DragFreeEskf f{model.e1};
-  Vec<9> Y = Vec<9>::Constant(1e-8), u = Vec<9>::Zero();
+  DragFreeEskf::Input in = [] {
+    DragFreeEskf::Input i;  // u = 0, Δf̄ = 0
+    i.y.setConstant(1e-8);
+    return i;
+  }();
+  DragFreeEskf::Output out;
   void operator()() noexcept {
-    Y(0) += 1e-12;
-    escape(f.predict(u));
-    escape(f.update(Y));
+    in.y(0) += 1e-12;
+    escape(f.step(in, out));
+    escape(out);
   }
 };
 
-//! Algorithm 2 (saturated ESF, one axis): predict + update, alternating in-range and saturated.
+//! Algorithm 2 (saturated ESF, one axis): step() = predict + update, alternating in-range and
+//! saturated readings.
 struct SaturatedEsfStep {
   DragFreeModel model;
   SaturatedEsf f{model.e2[0]};
+  SaturatedEsf::Input in;  // u_{k-1} = 0, Δf̄ = 0, u_k = 0
+  SaturatedEsf::Output out;
   long k = 0;
   void operator()() noexcept {
-    escape(f.predict(0.0));
-    escape(f.update((++k & 1) ? 1e-7 : 6e-6, 0.0));
+    in.y_c_m_s2 = (++k & 1) ? 1e-7 : 6e-6;
+    escape(f.step(in, out));
+    escape(out);
   }
 };
 
-//! Algorithms 1-3 + ADRC: the whole 0.1 s sample of dragfree-adrc.
+//! Algorithms 1-3 + ADRC: the whole 0.1 s sample of dragfree-adrc. The filters' two halves stay
+//! apart (predict, control from the prediction, update with the new u), as the loop runs them.
 struct DragFreeAdrcStep {
   DragFreeModel model;
   DragFreeEskf a1{model.e1};
   SaturatedEsf a2[3] = {SaturatedEsf(model.e2[0]), SaturatedEsf(model.e2[1]), SaturatedEsf(model.e2[2])};
   DragFreeAdrc ctrl{DragFreeAdrcParams{}};
-  Vec<9> Y = Vec<9>::Constant(1e-8), u = Vec<9>::Zero();
+  Vec<9> Y = Vec<9>::Constant(1e-8);
+  DragFreeAdrcInput in;  // φ_cmd = 0
+  DragFreeActuation u;   // [T_Csc; F_Csc; T_Ctm], zero before the first sample
   void operator()() noexcept {
     Y(0) += 1e-12;
-    escape(a1.predict(u));
-    for (auto& f : a2) escape(f.predict(u(4)));
+    escape(a1.predict(u.stacked()));
+    for (auto& f : a2) escape(f.predict(u.F_Csc_N(1)));
     escape(a1.update(Y));
-    const Vec3 F(a2[0].state()(2), a2[1].state()(2), a2[2].state()(2));
-    escape(ctrl.step(a1.state(), F, Vec3::Zero(), u));
+    in.x_hat = a1.state();
+    in.F_D_hat_N = Vec3(a2[0].state()(2), a2[1].state()(2), a2[2].state()(2));
+    escape(ctrl.step(in, u));
     for (int j = 0; j < 3; ++j) {
-      escape(a2[j].update(1e-7, u(3 + j)));
+      escape(a2[j].update(1e-7, u.F_Csc_N(j)));
       escape(fuse_axis(a1, a2[j], j));
     }
   }
@@ -104,12 +119,11 @@ struct FusionStep {
 //! The ADRC law alone (PID + disturbance compensation, 9 channels) on a moving estimate.
 struct AdrcStep {
   DragFreeAdrc ctrl{DragFreeAdrcParams{}};
-  Vec<27> x_hat = Vec<27>::Constant(1e-9);
-  Vec3 F{1e-6, -2e-6, 5e-7};
-  Vec<9> u;
+  DragFreeAdrcInput in{Vec<27>::Constant(1e-9), Vec3(1e-6, -2e-6, 5e-7), Vec3::Zero()};
+  DragFreeActuation u;
   void operator()() noexcept {
-    x_hat(0) += 1e-15;
-    escape(ctrl.step(x_hat, F, Vec3::Zero(), u));
+    in.x_hat(0) += 1e-15;
+    escape(ctrl.step(in, u));
     escape(u);
   }
 };
@@ -117,7 +131,8 @@ struct AdrcStep {
 //! A 3-channel PID sample (the baseline of dragfree-pid).
 struct PidStep {
   Pid<3> pid{params()};
-  Vec3 e_p{1e-6, -2e-6, 3e-7}, e_d{1e-8, 2e-8, -1e-8}, out;
+  PidInput<3> in{Vec3(1e-6, -2e-6, 3e-7), Vec3(1e-8, 2e-8, -1e-8)};
+  PidOutput<3> out;
   static PidParams<3> params() {
     PidParams<3> p;
     p.kp.setConstant(2.0);
@@ -126,8 +141,8 @@ struct PidStep {
     return p;
   }
   void operator()() noexcept {
-    e_p(0) += 1e-15;
-    escape(pid.step(e_p, e_d, out));
+    in.e_p(0) += 1e-15;
+    escape(pid.step(in, out));
     escape(out);
     if (pid.integral()(0) > 1.0) pid.reset();
   }

@@ -56,7 +56,7 @@ endforeach()
 foreach(unit attitude seed002 seed003 seed004 eskf27)
   set(_inst ${PROJECT_SOURCE_DIR}/tests/target/instantiate_${unit}.cpp)
   add_custom_command(OUTPUT ${_gen}/instantiate_${unit}.o
-    COMMAND ${ADCS_ARM_CXX} ${ADCS_ARM_FLAGS} -I${PROJECT_SOURCE_DIR}/include
+    COMMAND ${ADCS_ARM_CXX} ${ADCS_ARM_FLAGS} -I${PROJECT_SOURCE_DIR}/include -I${PROJECT_SOURCE_DIR}/src
             -isystem ${_eigen_inc} -c ${_inst} -o ${_gen}/instantiate_${unit}.o
     DEPENDS ${_inst} ${_header_paths}
     COMMENT "arm-none-eabi-g++ (Cortex-M7) instantiate_${unit}.cpp" VERBATIM)
@@ -95,7 +95,7 @@ file(MAKE_DIRECTORY ${_rgen})
 add_library(adcs_replay_host_flags INTERFACE)
 target_compile_options(adcs_replay_host_flags INTERFACE -ffp-contract=off)
 target_compile_definitions(adcs_replay_host_flags INTERFACE EIGEN_DONT_VECTORIZE)
-target_include_directories(adcs_replay_host_flags INTERFACE ${_tr})
+target_include_directories(adcs_replay_host_flags INTERFACE ${_tr} ${PROJECT_SOURCE_DIR}/src)  # scenarios/seed003_data.hpp
 target_link_libraries(adcs_replay_host_flags INTERFACE adcs::adcs adcs_warnings)
 foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
   add_library(adcs_replay_core_${sys} OBJECT EXCLUDE_FROM_ALL ${_tr}/replay_${sys}.cpp)

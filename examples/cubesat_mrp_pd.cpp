@@ -57,6 +57,7 @@ int main() {
   law.J_rw_B = plant.J_rw();
   law.G_s_B = vehicle.G_s_B;
   law.J_s = vehicle.J_s;
+  law.period_s = T;                                    // [s] required: the rate the law runs at
   law.on_failure = adcs::FailurePolicy::safe_command;  // the default: zero torque after a failed step
   adcs::MrpPd<kWheels> controller(law);
   if (controller.status() != adcs::Status::ok) return fail("MRP PD parameters refused");
@@ -69,8 +70,8 @@ int main() {
   if (allocator.status() != adcs::Status::ok) return fail("allocation parameters refused");
 
   // 4. The target: 30 deg about e = (1, 2, 3)/sqrt(14), sigma = tan(phi/4) e; inertial (rates 0).
-  adcs::AttitudeReference target;
-  target.sigma_RN = std::tan(30.0 * kDeg / 4.0) * adcs::Vec3(1.0, 2.0, 3.0).normalized();
+  adcs::MrpPd<kWheels>::Input in;
+  in.reference.sigma_RN = std::tan(30.0 * kDeg / 4.0) * adcs::Vec3(1.0, 2.0, 3.0).normalized();
 
   // 5. The loop: measure, control, allocate, hold for one period.
   Plant::State x = Plant::State::Zero();  // at rest, sigma_BN = 0, wheels stopped
@@ -79,20 +80,19 @@ int main() {
   double err_rad = 0.0, settle_s = 0.0, torque_max = 0.0;
   long not_ok = 0;
   for (int k = 0; k <= steps; ++k) {
-    adcs::MrpPd<kWheels>::Measurement m;  // perfect sensors here; yours go in these fields
-    m.sigma_BN = Plant::sigma_BN(x);
-    m.omega_BN_B = Plant::omega_BN_B(x);
-    m.Omega = Plant::Omega(x);
-    err_rad = adcs::mrp_principal_angle(adcs::mrp_subtract(m.sigma_BN, target.sigma_RN));
+    in.state.sigma_BN = Plant::sigma_BN(x);  // perfect sensors here; yours go in these fields
+    in.state.omega_BN_B = Plant::omega_BN_B(x);
+    in.Omega_rad_s = Plant::Omega(x);
+    err_rad = adcs::mrp_principal_angle(adcs::mrp_subtract(in.state.sigma_BN, in.reference.sigma_RN));
     if (err_rad > 1e-3) settle_s = (k + 1) * T;
     if (k == steps) break;
-    adcs::MrpPdCommand cmd;
-    if (controller.step(m, target, cmd) != adcs::Status::ok) ++not_ok;  // cmd is safe either way
-    adcs::Vec<kWheels> u_s;
-    const adcs::Status a = allocator.allocate(cmd.L_r_B, u_s);       // ok or saturated (clipped)
+    adcs::BodyTorque cmd;
+    if (controller.step(in, cmd) != adcs::Status::ok) ++not_ok;  // cmd is safe either way
+    adcs::WheelTorques<kWheels> wheels;
+    const adcs::Status a = allocator.step(cmd, wheels);  // ok or saturated (scaled); else zero torques
     if (!adcs::usable(a)) ++not_ok;
-    u.head<kWheels>() = u_s;
-    torque_max = std::fmax(torque_max, u_s.cwiseAbs().maxCoeff());
+    u.head<kWheels>() = wheels.u_s_Nm;
+    torque_max = std::fmax(torque_max, wheels.u_s_Nm.cwiseAbs().maxCoeff());
     for (int j = 0; j < substeps; ++j) rk4_step(plant, T / substeps, u, x);
   }
 

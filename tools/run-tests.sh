@@ -35,7 +35,7 @@ if [ "$quick" -eq 1 ]; then
     -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS_DEBUG=-O2 \
     -DADCS_BUILD_BENCH=OFF -DADCS_TARGET_CHECK=OFF -DADCS_FUZZ=OFF
   phase build cmake --build "$build" -j "$jobs"
-  phase ctest ctest --test-dir "$build" --output-on-failure -j "$jobs" -L 'unit|nomalloc|sim|examples'
+  phase ctest ctest --test-dir "$build" --output-on-failure -j "$jobs" -L 'unit|component|nomalloc|sim|examples|docs'
   exit 0
 fi
 

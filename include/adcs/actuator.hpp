@@ -7,3 +7,4 @@
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/actuator/saturation.hpp"
 #include "adcs/actuator/steering.hpp"
+#include "adcs/actuator/vscmg_steering.hpp"

@@ -4,6 +4,7 @@
 // and compiles alone; docs/USER-GUIDE.md "Including only what you use").
 #include "adcs/control/adaptive_tracking.hpp"
 #include "adcs/control/adrc.hpp"
+#include "adcs/control/eso_adrc_attitude.hpp"
 #include "adcs/control/euler_tracking_common.hpp"
 #include "adcs/control/ftsmc_se3.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"

@@ -5,6 +5,8 @@
 #include "adcs/core/component.hpp"
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/failure_policy.hpp"
+#include "adcs/core/plant.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"

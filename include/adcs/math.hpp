@@ -3,6 +3,7 @@
 // A family umbrella: include it, or only the headers below you use (each one is self-contained
 // and compiles alone; docs/USER-GUIDE.md "Including only what you use").
 #include "adcs/math/euler.hpp"
+#include "adcs/math/euler_dynamics.hpp"
 #include "adcs/math/expm.hpp"
 #include "adcs/math/lyapunov.hpp"
 #include "adcs/math/mrp.hpp"

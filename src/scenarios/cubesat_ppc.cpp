@@ -96,7 +96,7 @@ class CubesatPpc final : public Scenario {
     np.gains.compensator.beta = p.get_number("beta");
     np.gains.compensator.gamma = p.get_number("gamma");
     np.gains.compensator.sigma = p.get_number("sigma");
-    np.gains.control_period_s = p.get_number("control_period_s");
+    np.gains.period_s = p.get_number("control_period_s");
     np.gains.on_failure =
         p.get_name("on_failure") == "hold_last" ? FailurePolicy::hold_last : FailurePolicy::safe_command;
     const Vec3 rho0 = kDeg * p.get_vec<3>("rho0_deg"), rinf = kDeg * p.get_vec<3>("rho_inf_deg");
@@ -142,8 +142,9 @@ class CubesatPpc final : public Scenario {
     double torque_max = 0.0, margin_min = INFINITY;
     long saturated = 0, samples = 0, nonfinite = 0, failed = 0, speed_held = 0;
     StatusCounts statuses;
-    EulerTrackingCommand cmd;
-    EulerTrackingMeasurement m;
+    BodyTorque cmd;
+    EulerTrackingInput m;
+    m.reference = ref;
     Vec<kRigidRwWheels> u_s = Vec<kRigidRwWheels>::Zero();
     SampledDataOptions opt;
     opt.t_end = p.get_number("duration_s");
@@ -151,16 +152,17 @@ class CubesatPpc final : public Scenario {
     const double t_end = opt.t_end;
 
     auto control = [&](double t, const RigidRwPlant::State& xs, RigidRwPlant::Input& u) {
-      m.t = t;  // perfect measurements (assumed), Euler x-y-z angles as the law expects
-      m.angles = dcm_to_euler123(mrp_to_dcm(RigidRwPlant::sigma_BN(xs)));
-      m.omega_BN_B = RigidRwPlant::omega_BN_B(xs);
+      m.t_s = t;  // perfect measurements (assumed), the Euler view the law expects
+      m.state = to_euler123(AttitudeState{RigidRwPlant::sigma_BN(xs), RigidRwPlant::omega_BN_B(xs)});
       PpcNeuralDiagnostics d;
-      const Status s = law.step(m, ref, cmd, &d);
+      const Status s = law.step(m, cmd, &d);
       statuses.add(s);
       if (!usable(s)) ++failed;
       if (usable(s)) margin_min = std::min(margin_min, d.funnel_margin);
-      if (!all_finite(cmd.torque_B)) ++nonfinite;
-      if (allocator.allocate(cmd.torque_B, u_s) == Status::saturated) ++saturated;
+      if (!all_finite(cmd.torque_B_Nm)) ++nonfinite;
+      WheelTorques<kRigidRwWheels> w;
+      if (allocator.step(cmd, w) == Status::saturated) ++saturated;
+      u_s = w.u_s_Nm;
       LimitReport lr;  // each wheel's speed limit (the torque limit is the allocator's)
       if (limit_wheel_torques<kRigidRwWheels>(limits, RigidRwPlant::Omega(xs), u_s, &lr) == Status::saturated)
         speed_held += lr.wheel_speed_held;
@@ -187,7 +189,7 @@ class CubesatPpc final : public Scenario {
         }
         for (int i = 0; i < 3; ++i) row.push_back(lo(i));
         for (int i = 0; i < 3; ++i) row.push_back(hi(i));
-        for (int i = 0; i < 3; ++i) row.push_back(cmd.torque_B(i));
+        for (int i = 0; i < 3; ++i) row.push_back(cmd.torque_B_Nm(i));
         for (int i = 0; i < kRigidRwWheels; ++i) row.push_back(u(i));
         if (t == t_end) csv->record_final(row.data()); else csv->record(row.data());
       }

@@ -99,6 +99,7 @@ struct DragFreeConfig {
     e.y_max = saturating ? plant.accel_max : INFINITY;
     e.theta_policy = theta;
     e.saturation = mode;
+    e.period_s = plant.period_s;
     return e;
   }
   DragFreeEskf::Params eskf() const {
@@ -114,6 +115,7 @@ struct DragFreeConfig {
     e.S = s.asDiagonal();
     e.R = (noise.sigma_pos * noise.sigma_pos) * Mat<9, 9>::Identity();
     e.theta_policy = theta;
+    e.period_s = plant.period_s;
     return e;
   }
 };
@@ -158,7 +160,7 @@ void declare_common(ParamSet& p, Kind kind) {
 DragFreeConfig make_config(const ParamSet& p) {
   DragFreeConfig c;
   DragFreeParams& d = c.plant;
-  d.h = p.get_number("control_period_s");
+  d.period_s = p.get_number("control_period_s");
   d.m_tm = p.get_number("m_tm_kg");
   d.m_sc = p.get_number("m_sc_kg");
   d.I_tm = p.get_mat<3, 3>("I_tm_kgm2");
@@ -175,7 +177,7 @@ DragFreeConfig make_config(const ParamSet& p) {
   d.asd_pos = p.get_number("asd_position");
   d.asd_acc = p.get_number("asd_accel");
   d.two_sided_noise = p.get_name("noise_density") == "two_sided";
-  if (!(d.h > 0.0) || !(d.m_tm > 0.0) || !(d.m_sc > 0.0) || !(d.accel_max > 0.0))
+  if (!(d.period_s > 0.0) || !(d.m_tm > 0.0) || !(d.m_sc > 0.0) || !(d.accel_max > 0.0))
     throw ParamError("drag-free: h, masses and the accelerometer range must be > 0");
   if (drag_free_discretize(d, c.model) != Status::ok)  // valid(DragFreeParams), then the ZOH
     throw ParamError("drag-free: plant rejected (SPD inertias, finite stiffness/damping, ASDs >= 0) "
@@ -184,7 +186,7 @@ DragFreeConfig make_config(const ParamSet& p) {
   c.omega_d = p.get_number("omega_d") * (p.get_name("omega_d_unit") == "Hz" ? 2.0 * kPi : 1.0);
   c.bias = 1e-3 * p.get_number("dist_bias_mN");
   c.amp = 1e-3 * p.get_number("dist_amp_mN");
-  const double qv = std::pow(std::abs(c.amp) * c.omega_d * d.h, 2);  // (max|ḟ| h)², spec §B.8
+  const double qv = std::pow(std::abs(c.amp) * c.omega_d * d.period_s, 2);  // (max|ḟ| h)², spec §B.8
   c.q << Vec3::Constant(qv), Vec3::Constant(qv), Vec3::Zero();         // T_Dtm ≡ 0: q = 0
   c.theta = p.get_name("theta_policy") == "fixed_initial" ? ThetaPolicy::fixed_initial : ThetaPolicy::trace_optimal;
   return c;
@@ -200,7 +202,7 @@ double rms(const std::vector<double>& e) {
 // ------------------------------------------------------------------ item 1: L1 / L2 / L3
 RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
   const DragFreeConfig c = make_config(p);
-  const double h = c.plant.h;
+  const double h = c.plant.period_s;
   const long n = std::lround(p.get_number("duration_s") / h);
   const double t0 = p.get_name("start") == "unsaturated" ? 0.5 * kPi / c.omega_d : 0.0;  // spec B.9-1 [A]
   const bool truth_rates = p.get_name("r_source") == "truth";
@@ -298,7 +300,7 @@ struct LoopOutcome {
 
 LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind, DragFreeXLaw x_law) {
   const DragFreeConfig c = make_config(p);
-  const double h = c.plant.h;
+  const double h = c.plant.period_s;
   const long n = std::lround(p.get_number("duration_s") / h);
   DragFreeAdrcParams ap;
   ap.plant = c.plant;
@@ -373,7 +375,9 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
       throw SimError("drag-free: Algorithm 1 update failed at t = " + format_number(t) + " s");
     // 3. control from Algorithm 1's posterior and Algorithm 2's predicted f̂
     const Vec3 F_hat(alg2[0].state()(2), alg2[1].state()(2), alg2[2].state()(2));
-    const Status cs = adrc.step(alg1.state(), F_hat, phi_cmd, u);
+    DragFreeActuation act;
+    const Status cs = adrc.step(DragFreeAdrcInput{alg1.state(), F_hat, phi_cmd}, act);
+    u = act.stacked();
     if (!usable(cs)) ++nonok;
     cmd_max = std::max(cmd_max, u.cwiseAbs().maxCoeff());
     // 4. actuator noise, accelerometer (includes u_k and w_k, eq. (13)), saturation

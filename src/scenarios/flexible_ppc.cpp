@@ -18,6 +18,7 @@
 #include "adcs/control/adaptive_tracking.hpp"
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
+#include "adcs/reference/sinusoidal_euler.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/truth_plants.hpp"
 #include "scenarios/verdicts.hpp"
@@ -257,7 +258,7 @@ class FlexibleScenario final : public Scenario {
     g.compensator.beta = p.get_number("beta");
     g.compensator.gamma = p.get_number("gamma");
     g.units = p.get_name("units") == "U_deg" ? AngleUnits::degrees : AngleUnits::radians;
-    g.control_period_s = T;
+    g.period_s = T;
     if (dropout_ && p.get_name("on_failure") == "hold_last") g.on_failure = FailurePolicy::hold_last;
     PpcParams<3> pp;
     const Vec3 rho0 = d2r * p.get_vec<3>("rho0_deg"), rinf = d2r * p.get_vec<3>("rho_inf_deg");
@@ -322,21 +323,21 @@ class FlexibleScenario final : public Scenario {
     double err_after_rad = 0.0;
     std::size_t sample = 0;
     Vec3 e_final = Vec3::Zero();
-    EulerTrackingCommand cmd;
+    BodyTorque cmd;
     std::vector<double> row;
 
     auto control = [&](double t, const Plant::State& xs, Vec3& u) {
-      EulerTrackingMeasurement m;  // perfect measurements (Assumption 1, B.4 #4)
-      m.t = t;
-      m.angles = Plant::angles(xs);
-      m.omega_BN_B = Plant::omega_BN_B(xs);
-      if (t >= drop0 && t < drop1) m.omega_BN_B.setConstant(std::numeric_limits<double>::quiet_NaN());
-      const Status s = ppc_ ? ppc->step(m, ref.sample(t), cmd) : atc->step(m, ref.sample(t), cmd);
+      EulerTrackingInput m;  // perfect measurements (Assumption 1, B.4 #4)
+      m.t_s = t;
+      m.state = AttitudeStateEuler123{Plant::angles(xs), Plant::omega_BN_B(xs)};
+      if (t >= drop0 && t < drop1) m.state.omega_BN_B.setConstant(std::numeric_limits<double>::quiet_NaN());
+      m.reference = ref.sample(t);
+      const Status s = ppc_ ? ppc->step(m, cmd) : atc->step(m, cmd);
       statuses.add(s);
-      if (!all_finite(cmd.torque_B)) ++nonfinite_cmd;
+      if (!all_finite(cmd.torque_B_Nm)) ++nonfinite_cmd;
       if (s == Status::out_of_range || s == Status::constraint_violated) ++ctrl_flags;
       if (s != Status::ok) ++nonok;
-      u = cmd.torque_B;
+      u = cmd.torque_B_Nm;
     };
     auto observe = [&](double t, const Plant::State& xs, const Vec3& u) {
       if (!(std::abs(Plant::angles(xs)(1)) < 89.0 * d2r))  // spec §B.2 guard: F is singular at 90°

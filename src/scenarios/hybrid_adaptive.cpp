@@ -302,7 +302,7 @@ class HybridScenario final : public Scenario {
     cp.alpha_G = p.get_number("alpha_G");
     cp.beta_G = p.get_number("beta_G");
     cp.delta_G = p.get_number("delta_G");
-    cp.control_period_s = T;
+    cp.period_s = T;
     cp.adaptation_step = p.get_name("adaptation_step") == "normalized" ? AdaptationStep::normalized
                                                                        : AdaptationStep::explicit_euler;
     cp.max_step_gain = p.get_number("max_step_gain");
@@ -363,7 +363,7 @@ class HybridScenario final : public Scenario {
     Vec3 H_expected = H_true;           // H(0) + ∫ Cᵀ τ_ext dt (trapezoid at the samples)
     Vec3 torque_N_prev = Vec3::Zero();  // Cᵀ τ_ext at the previous sample
     double t_prev = 0.0;
-    Controller::Command cmd;
+    Controller::Output cmd;
     Controller::Diagnostics diag;
     std::vector<double> row;
     const SinusoidalRateReference& ref = sim.ref;
@@ -391,24 +391,25 @@ class HybridScenario final : public Scenario {
 
     auto control = [&](double t, const HybridSimPlant::State& xs, HybridSimPlant::Input& u) {
       const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
-      Controller::Measurement m;  // perfect measurements (spec §A.5)
-      m.sigma_BN = FullPlant::sigma_BN(xp);
-      m.omega_BN_B = plant.omega_BN_B(xp, u);  // ω with the γ̇ held over the last period
-      m.gamma = FullPlant::gamma(xp);
-      m.Omega_w = FullPlant::Omega_w(xp);
+      Controller::Input m;  // perfect measurements (spec §A.5)
+      m.state.sigma_BN = FullPlant::sigma_BN(xp);
+      m.state.omega_BN_B = plant.omega_BN_B(xp, u);  // ω with the γ̇ held over the last period
+      m.actuators.gamma_rad = FullPlant::gamma(xp);
+      m.actuators.Omega_rad_s = FullPlant::Omega_w(xp);
       if (faulty && !fdir_applied && t >= t_fdir) {
         if (ctrl.set_available(all_actuators<kM + kN>() & ~(ActuatorMask{1} << k_fail)) != Status::ok)
           throw SimError("hybrid fault: actuator mask rejected");
         fdir_applied = true;
       }
-      const Status s = ctrl.step(m, ref.sample(t, xs.tail<3>()), cmd, &diag);
+      m.reference = ref.sample(t, xs.tail<3>());
+      const Status s = ctrl.step(m, cmd, &diag);
       if (s != Status::ok) ++nonok;
       statuses.add(s);
-      if (!all_finite(cmd.u)) ++nonfinite_cmd;
-      if (fdir_applied) failed_cmd_after_fdir = std::max(failed_cmd_after_fdir, std::abs(cmd.u(k_fail)));
-      gimbal_rate_peak = std::max(gimbal_rate_peak, cmd.u.head<kM>().cwiseAbs().maxCoeff());
-      wheel_accel_peak = std::max(wheel_accel_peak, cmd.u.tail<kN>().cwiseAbs().maxCoeff());
-      u = cmd.u;
+      u = cmd.stacked();
+      if (!all_finite(u)) ++nonfinite_cmd;
+      if (fdir_applied) failed_cmd_after_fdir = std::max(failed_cmd_after_fdir, std::abs(u(k_fail)));
+      gimbal_rate_peak = std::max(gimbal_rate_peak, cmd.gamma_dot_rad_s.cwiseAbs().maxCoeff());
+      wheel_accel_peak = std::max(wheel_accel_peak, cmd.Omega_dot_rad_s2.cwiseAbs().maxCoeff());
       if (saturate_each<kM + kN>(u, u_limit) > 0) ++limit_hits;  // spec A.5: flag if hit
       if (t >= t_fault) u(k_fail) = 0.0;  // frozen gimbal (γ̇ = 0) / lost wheel (no torque)
     };

@@ -34,6 +34,10 @@ std::unique_ptr<Scenario> make_se3_campaign();
 std::unique_ptr<Scenario> make_cmg_singularity_escape();
 std::unique_ptr<Scenario> make_cubesat_mrp_pd();
 std::unique_ptr<Scenario> make_cubesat_ppc_10hz();
+std::unique_ptr<Scenario> make_hybrid_ppc();
+std::unique_ptr<Scenario> make_vscmg_mrp_pd();
+std::unique_ptr<Scenario> make_flexible_eso_adrc();
+std::unique_ptr<Scenario> make_rigid_rw_prescribed_time();
 
 namespace {
 
@@ -66,6 +70,10 @@ std::vector<std::unique_ptr<Scenario>> build_registry() {
   v.push_back(make_cmg_singularity_escape());
   v.push_back(make_cubesat_mrp_pd());
   v.push_back(make_cubesat_ppc_10hz());
+  v.push_back(make_hybrid_ppc());
+  v.push_back(make_vscmg_mrp_pd());
+  v.push_back(make_flexible_eso_adrc());
+  v.push_back(make_rigid_rw_prescribed_time());
   return v;
 }
 

@@ -94,6 +94,17 @@ RigidRwPlant::Params rigid_rw_plant_params(const ParamSet& p) {
   return pp;
 }
 
+IntegratorChoice integrator_choice(const ParamSet& p) {
+  const std::string method = p.get_name("integrator");
+  IntegratorChoice c;
+  c.kind = method == "rk4" ? IntegratorChoice::Kind::rk4
+                           : (method == "bdf" ? IntegratorChoice::Kind::bdf : IntegratorChoice::Kind::adams);
+  c.rtol = p.get_number("rtol");
+  c.atol = p.get_number("atol");
+  c.rk4_step_s = p.get_number("rk4_step_s");
+  return c;
+}
+
 RigidRwPlant::State rigid_rw_initial_state(const ParamSet& p, std::uint64_t seed,
                                            std::vector<UsedValue>* used) {
   RigidRwPlant::State x;

@@ -4,14 +4,14 @@
 // integrator choice, and the CSV columns users compare with other tools.
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "adcs/actuator/limits.hpp"
 #include "adcs/plant/rigid_body_rw.hpp"
 #include "scenarios/scenario.hpp"
-#include "sim/cvode_integrator.hpp"
+#include "sim/closed_loop.hpp"
 #include "sim/recorder.hpp"
-#include "sim/rk4_integrator.hpp"
 
 namespace adcs::sim {
 
@@ -70,23 +70,15 @@ std::vector<Column> rigid_rw_columns(const std::vector<Column>& extra = {});
 //! Appends t and the plant state to `row` (in rigid_rw_columns() order).
 void rigid_rw_row(double t, const RigidRwPlant::State& x, std::vector<double>& row);
 
-//! Calls `body(integrator)` with the integrator the parameters select (adams / bdf: CVODE,
-//! rk4: fixed step). A generic lambda receives the concrete integrator type.
+//! The integrator the parameters select ("integrator" adams / bdf / rk4, "rtol", "atol",
+//! "rk4_step_s", declared by declare_rigid_rw_plant): the one choice of sim/closed_loop.hpp.
+IntegratorChoice integrator_choice(const ParamSet& p);
+
+//! Calls `body(integrator)` with the integrator the parameters select. A generic lambda receives
+//! the concrete integrator type.
 template <class Body>
 void with_integrator(const RigidRwPlant& plant, const ParamSet& p, Body&& body) {
-  const std::string method = p.get_name("integrator");
-  if (method == "rk4") {
-    Rk4Integrator<RigidRwPlant> integrator(plant, p.get_number("rk4_step_s"));
-    body(integrator);
-    return;
-  }
-  CvodeOptions options;
-  options.method = method == "bdf" ? CvodeOptions::Method::bdf_dense
-                                   : CvodeOptions::Method::adams_fixed_point;
-  options.rtol = p.get_number("rtol");
-  options.atol = p.get_number("atol");
-  CvodeIntegrator<RigidRwPlant> integrator(plant, options);
-  body(integrator);
+  sim::with_integrator(plant, integrator_choice(p), std::forward<Body>(body));
 }
 
 }  // namespace adcs::sim

@@ -108,6 +108,7 @@ class RigidRwMrpPd final : public Scenario {
     cp.J_rw_B = plant.J_rw();
     cp.G_s_B = pp.G_s_B;
     cp.J_s = pp.J_s;
+    cp.period_s = p.get_number("control_period_s");
     MrpPd<kRigidRwWheels> controller(cp);
     if (controller.status() != Status::ok)
       throw ParamError("MRP PD parameters rejected (K_Nm > 0, P_Nms > 0, SPD inertia, unit wheel axes)");
@@ -137,7 +138,7 @@ class RigidRwMrpPd final : public Scenario {
     std::vector<double> t_series, err_series, row;
     double torque_max = 0.0, wheel_max = 0.0, dH_max = 0.0;
     long saturated = 0, rejected = 0, samples = 0, speed_held = 0;
-    MrpPdCommand cmd;
+    BodyTorque cmd;
     Vec<kRigidRwWheels> u_s = Vec<kRigidRwWheels>::Zero();
     SampledDataOptions opt;
     opt.t_end = p.get_number("duration_s");
@@ -145,12 +146,14 @@ class RigidRwMrpPd final : public Scenario {
     const double t_end = opt.t_end;
 
     auto control = [&](double, const RigidRwPlant::State& xs, RigidRwPlant::Input& u) {
-      MrpPd<kRigidRwWheels>::Measurement m;  // perfect measurements (assumed)
-      m.sigma_BN = RigidRwPlant::sigma_BN(xs);
-      m.omega_BN_B = RigidRwPlant::omega_BN_B(xs);
-      m.Omega = RigidRwPlant::Omega(xs);
-      if (controller.step(m, ref, cmd) != Status::ok) ++rejected;
-      const Status s = allocator.allocate(cmd.L_r_B, u_s);
+      MrpPd<kRigidRwWheels>::Input m;  // perfect measurements (assumed)
+      m.state = AttitudeState{RigidRwPlant::sigma_BN(xs), RigidRwPlant::omega_BN_B(xs)};
+      m.Omega_rad_s = RigidRwPlant::Omega(xs);
+      m.reference = ref;
+      if (controller.step(m, cmd) != Status::ok) ++rejected;
+      WheelTorques<kRigidRwWheels> w;
+      const Status s = allocator.step(cmd, w);
+      u_s = w.u_s_Nm;  // zero when refused (the wheels coast)
       if (s == Status::saturated) ++saturated;
       else if (s != Status::ok) ++rejected;
       LimitReport lr;  // each wheel's speed limit (the torque limit is the allocator's)
@@ -170,7 +173,7 @@ class RigidRwMrpPd final : public Scenario {
       if (csv) {
         rigid_rw_row(t, xs, row);
         row.push_back(err);
-        for (int i = 0; i < 3; ++i) row.push_back(cmd.L_r_B(i));
+        for (int i = 0; i < 3; ++i) row.push_back(cmd.torque_B_Nm(i));
         for (int i = 0; i < kRigidRwWheels; ++i) row.push_back(u(i));
         if (t == t_end) csv->record_final(row.data()); else csv->record(row.data());
       }

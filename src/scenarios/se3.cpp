@@ -26,6 +26,7 @@
 #include "scenarios/scenario.hpp"
 #include "scenarios/se3_loop.hpp"
 #include "sim/metrics.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace adcs::sim {
 namespace {

@@ -42,6 +42,7 @@
 #include "sim/rk4_integrator.hpp"
 #include "sim/sampled_data.hpp"
 #include "sim/sim_error.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace adcs::sim::se3 {
 namespace {
@@ -81,10 +82,14 @@ class Se3Loop {
     std::optional<PrescribedTimeSe3> ptc;
     std::optional<FtsmcSe3> fts;
     if (law_ == Law::ptc) {
-      ptc.emplace(c_.ptc, nominal.params());
+      PrescribedTimeSe3Params pp = c_.ptc;
+      pp.nominal = nominal.params();
+      ptc.emplace(pp);
       if (ptc->status() != Status::ok) throw ParamError("BsPdTC gains rejected (0 < p < 1, T > 0, a > 0, ...)");
     } else {
-      fts.emplace(c_.fts, nominal.params());
+      FtsmcSe3Params fp = c_.fts;
+      fp.nominal = nominal.params();
+      fts.emplace(fp);
       if (fts->status() != Status::ok) throw ParamError("FTSMC gains rejected (K >= 0, rho > 0, phi > 0, ...)");
     }
     CompositeQuantizer<6> Q(c_.q);
@@ -111,9 +116,11 @@ class Se3Loop {
       Se3DesiredState d;
       if (se3_desired_state(target, o, sp, d) != Status::ok) throw SimError("se3: target state invalid");
       if (ptc) psi_used = ptc->psi_hat();
-      const Status s = ptc ? ptc->step(c, d, cmd) : fts->step(c, d, cmd);
+      Wrench w;
+      const Status s = ptc ? ptc->step({c, d}, w) : fts->step({c, d}, w);
+      cmd = w.stacked();
       if (s != Status::ok) ++out.nonok;
-      Vec6 uc;
+      Vec6 uc = Vec6::Zero();
       if (c_.quantize) {
         const Status q = saturate_then_quantize<6>(cmd, limit, Q, uc);
         if (q == Status::saturated) ++out.saturated;
@@ -366,7 +373,8 @@ Se3Config common_config(const ParamSet& p) {
   const double every = p.get_number("record_every");
   if (!(every >= 1.0) || every != std::floor(every)) throw ParamError("record_every must be an integer >= 1");
   c.record_every = static_cast<int>(every);
-  c.ptc.h = c.period;
+  c.ptc.period_s = c.period;
+  c.fts.period_s = c.period;
   c.ptc.zeta = quantization_compensation_gain(c.q, 1.05);
   return c;
 }

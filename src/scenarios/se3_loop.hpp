@@ -15,6 +15,7 @@
 #include "adcs/plant/se3_spacecraft.hpp"
 #include "scenarios/params.hpp"
 #include "scenarios/verdicts.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace adcs::sim::se3 {
 

@@ -6,11 +6,14 @@
 #include <cmath>
 #include <limits>
 
+#include "adcs/core/plant.hpp"
 #include "adcs/math/quaternion.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
+#include "adcs/plant/se3_spacecraft_plant.hpp"
 #include "adcs/plant/vscmg_cluster.hpp"
 #include "adcs/reference/sinusoidal_rate.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace adcs::sim {
 
@@ -24,6 +27,9 @@ struct HybridSimPlant {
   using Input = Vec<kInputSize>;
   const FullPlant* plant;
   SinusoidalRateReference ref;
+  Status status() const noexcept {
+    return plant != nullptr && ref.status() == Status::ok ? plant->status() : Status::invalid_parameter;
+  }
   void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
     FullPlant::State xp = x.head<FullPlant::kStateSize>(), dp;
     plant->derivative(t, xp, u, dp);
@@ -31,6 +37,7 @@ struct HybridSimPlant {
     xdot.tail<3>() = ref.sigma_dot(t, x.tail<3>());
   }
 };
+ADCS_ASSERT_PLANT(HybridSimPlant);
 
 // ------------------------------------------------------------------ seed 002
 //! Truth plant plus the disturbance d(t) of seed 002 §4 (B.4 #22) added to the control torque.
@@ -42,6 +49,9 @@ struct FlexibleSimPlant {
   using Input = Vec3;
   const Plant* plant;
   double d_amp, n0;
+  Status status() const noexcept {
+    return plant != nullptr && std::isfinite(d_amp) && std::isfinite(n0) ? plant->status() : Status::invalid_parameter;
+  }
   Vec3 disturbance(double t) const noexcept {  // d = a [cos n0t + 1, cos n0t + sin n0t, sin n0t + 1]
     const double c = std::cos(n0 * t), s = std::sin(n0 * t);
     return d_amp * Vec3(c + 1.0, c + s, s + 1.0);
@@ -50,6 +60,7 @@ struct FlexibleSimPlant {
     plant->derivative(t, x, Vec3(u + disturbance(t)), xdot);
   }
 };
+ADCS_ASSERT_PLANT(FlexibleSimPlant);
 
 // ------------------------------------------------------------------ seed 003 (26 states)
 //! Chaser (states 0..12) and target (13..25), each [q (4), R_N (3), ω (3), v (3)].
@@ -63,37 +74,18 @@ struct Se3PairPlant {
   const Se3Spacecraft* chaser;      //!< truth J, m
   const Se3Spacecraft* target;      //!< J_o, m_o
   const Se3ScenarioParams* scenario;  //!< disturbance
+  Status status() const noexcept {
+    if (chaser == nullptr || target == nullptr || scenario == nullptr) return Status::invalid_parameter;
+    return chaser->status() != Status::ok ? chaser->status() : target->status();
+  }
 
-  //! The body at offset `off` (0 chaser, kBody target), C_NB from q/‖q‖.
-  static Se3SpacecraftState body(const State& x, int off) noexcept {
-    Se3SpacecraftState s;
-    const Vec4 q = x.segment<4>(off);
-    s.C_NB = quat_to_dcm(QuaternionSF::from_scalar_first(q / q.norm())).transpose();
-    s.R_N = x.segment<3>(off + 4);
-    s.omega_BN_B = x.segment<3>(off + 7);
-    s.v_B = x.segment<3>(off + 10);
-    return s;
-  }
-  static void put(State& x, int off, const Se3SpacecraftState& s) noexcept {
-    x.segment<4>(off) = dcm_to_quat(s.C_NB.transpose()).scalar_first();
-    x.segment<3>(off + 4) = s.R_N;
-    x.segment<3>(off + 7) = s.omega_BN_B;
-    x.segment<3>(off + 10) = s.v_B;
-  }
-  static void rates(const Se3Spacecraft& m, const State& x, int off, const Vec6& tau_c,
-                    const Vec6& tau_d, State& xdot) noexcept {
-    Se3SpacecraftRates r;
-    if (m.derivative(body(x, off), tau_c, tau_d, r) != Status::ok) {
-      xdot.segment<kBody>(off).setConstant(std::numeric_limits<double>::quiet_NaN());  // CVODE stops
-      return;
-    }
-    const Vec4 q = x.segment<4>(off);
-    const Vec3 w = x.segment<3>(off + 7);
-    xdot(off) = -0.5 * q.tail<3>().dot(w);                            // q̇ = ½ q ⊗ (0, ω)
-    xdot.segment<3>(off + 1) = 0.5 * (q(0) * w + q.tail<3>().cross(w));
-    xdot.segment<3>(off + 4) = r.R_dot_N;
-    xdot.segment<3>(off + 7) = r.omega_dot_B;
-    xdot.segment<3>(off + 10) = r.v_dot_B;
+  //! The body at offset `off` (0 chaser, kBody target): the flight adapter's layout and
+  //! arithmetic (plant/se3_spacecraft_plant.hpp), twice.
+  static Se3SpacecraftState body(const State& x, int off) noexcept { return Se3SpacecraftPlant::body(x, off); }
+  static void put(State& x, int off, const Se3SpacecraftState& s) noexcept { Se3SpacecraftPlant::put(x, off, s); }
+  static void rates(const Se3Spacecraft& m, const State& x, int off, const Vec6& tau_c, const Vec6& tau_d,
+                    State& xdot) noexcept {
+    Se3SpacecraftPlant::rates(m, x, off, tau_c, tau_d, xdot);
   }
   void derivative(double t, const State& x, const Input& u, State& xdot) const noexcept {
     rates(*chaser, x, 0, u, se3_disturbance(t, *scenario), xdot);
@@ -101,16 +93,10 @@ struct Se3PairPlant {
   }
   //! Re-normalises both quaternions; true if either changed.
   bool normalize(State& x) const noexcept {
-    bool changed = false;
-    for (int off : {0, kBody}) {
-      const double n = x.segment<4>(off).norm();
-      if (n != 1.0 && n > 0.0) {
-        x.segment<4>(off) /= n;
-        changed = true;
-      }
-    }
-    return changed;
+    const bool chaser_changed = Se3SpacecraftPlant::normalize_at(x, 0);
+    return Se3SpacecraftPlant::normalize_at(x, kBody) || chaser_changed;
   }
 };
+ADCS_ASSERT_PLANT(Se3PairPlant);
 
 }  // namespace adcs::sim

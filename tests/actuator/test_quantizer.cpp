@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "adcs/actuator/quantizer.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace {
 using adcs::QuantizerChannel;

@@ -193,7 +193,7 @@ TEST(SingularityEscape, MatchesThePseudoInverseAwayFromSingularities) {
   const Cluster g = small_pyramid();
   const adcs::Mat<3, 4> X = jacobian(g, adcs::Vec<4>(0.1, -0.2, 0.3, 0.05));
   const adcs::Vec3 v(-2e-3, 1e-3, 5e-4);
-  adcs::Vec<4> u_exact, u;
+  adcs::Vec<4> u_exact = adcs::Vec<4>::Zero(), u = adcs::Vec<4>::Zero();
   ASSERT_EQ((adcs::right_pinv_solve<3, 4>(X, v, u_exact)), Status::ok);
   adcs::SteeringInfo info;
   for (double t : {0.0, 0.37, 12.5}) {

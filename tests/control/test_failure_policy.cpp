@@ -11,6 +11,7 @@
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/pid.hpp"
 #include "adcs/control/ppc_neural.hpp"
+#include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "adcs/reference/sinusoidal_rate.hpp"
 
@@ -39,17 +40,17 @@ TEST(FailurePolicy, MrpPdZeroTorqueOrHold) {
     p.G_s_B.leftCols<3>().setIdentity();
     p.G_s_B.col(3) = Vec3::Ones().normalized();
     p.J_s.setConstant(1e-4);
+    p.period_s = 0.1;
     p.on_failure = policy;
     adcs::MrpPd<4> ctrl(p);
-    adcs::MrpPd<4>::Measurement m;
-    m.sigma_BN = Vec3(0.1, -0.2, 0.3);
-    adcs::AttitudeReference r;
-    adcs::MrpPdCommand good, out;
-    ASSERT_EQ(ctrl.step(m, r, good), Status::ok);
-    ASSERT_GT(good.L_r_B.norm(), 0.0);
-    m.omega_BN_B(1) = kNaN;
-    EXPECT_EQ(ctrl.step(m, r, out), Status::non_finite_input);
-    EXPECT_EQ(out.L_r_B, policy == FailurePolicy::hold_last ? good.L_r_B : Vec3::Zero());
+    adcs::MrpPd<4>::Input in;
+    in.state.sigma_BN = Vec3(0.1, -0.2, 0.3);
+    adcs::BodyTorque good, out;
+    ASSERT_EQ(ctrl.step(in, good), Status::ok);
+    ASSERT_GT(good.torque_B_Nm.norm(), 0.0);
+    in.state.omega_BN_B(1) = kNaN;
+    EXPECT_EQ(ctrl.step(in, out), Status::non_finite_input);
+    EXPECT_EQ(out.torque_B_Nm, policy == FailurePolicy::hold_last ? good.torque_B_Nm : Vec3::Zero());
   }
 }
 
@@ -59,18 +60,18 @@ TEST(FailurePolicy, HybridAdaptiveZeroRatesOrHoldAndEstimatesUntouched) {
     p.nominal = adcs::pyramid_4cmg_3rw_nominal();
     p.on_failure = policy;
     adcs::HybridAdaptive<4, 3> ctrl(p);
-    adcs::HybridAdaptive<4, 3>::Measurement m;
-    m.sigma_BN << 0.3, -0.2, 0.1;
-    m.omega_BN_B << 0.01, -0.02, 0.015;
-    m.gamma << 0.1, -0.2, 0.15, 0.05;
-    const adcs::MrpReferenceSample r = adcs::SinusoidalRateReference{}.sample(12.0, Vec3(0.29, -0.21, 0.1));
-    adcs::HybridAdaptive<4, 3>::Command good, out;
-    ASSERT_TRUE(adcs::usable(ctrl.step(m, r, good)));
-    ASSERT_GT(good.u.norm(), 0.0);
+    adcs::HybridAdaptive<4, 3>::Input in;
+    in.state.sigma_BN << 0.3, -0.2, 0.1;
+    in.state.omega_BN_B << 0.01, -0.02, 0.015;
+    in.actuators.gamma_rad << 0.1, -0.2, 0.15, 0.05;
+    in.reference = adcs::SinusoidalRateReference{}.sample(12.0, Vec3(0.29, -0.21, 0.1));
+    adcs::VscmgRates<4, 3> good, out;
+    ASSERT_TRUE(adcs::usable(ctrl.step(in, good)));
+    ASSERT_GT(good.stacked().norm(), 0.0);
     const auto theta_F = ctrl.theta_F();
-    m.gamma(2) = kNaN;
-    EXPECT_EQ(ctrl.step(m, r, out), Status::non_finite_input);
-    EXPECT_EQ(out.u, policy == FailurePolicy::hold_last ? good.u : adcs::Vec<7>::Zero());
+    in.actuators.gamma_rad(2) = kNaN;
+    EXPECT_EQ(ctrl.step(in, out), Status::non_finite_input);
+    EXPECT_EQ(out.stacked(), policy == FailurePolicy::hold_last ? good.stacked() : adcs::Vec<7>::Zero());
     EXPECT_EQ(ctrl.theta_F(), theta_F);
   }
 }
@@ -82,16 +83,15 @@ TEST(FailurePolicy, PpcNeuralZeroTorqueOrHold) {
     p.gains.on_failure = policy;
     adcs::PpcNeural law(p);
     ASSERT_EQ(law.status(), Status::ok);
-    adcs::EulerTrackingMeasurement m;
-    m.angles = Vec3(0.002, -0.002, 0.001);  // inside the funnel: rho0 = 0.3 deg
-    adcs::EulerReferenceSample r;
-    adcs::EulerTrackingCommand good, out;
-    ASSERT_TRUE(adcs::usable(law.step(m, r, good)));
-    ASSERT_GT(good.torque_B.norm(), 0.0);
-    m.t = 1e-4;
-    m.omega_BN_B(0) = kNaN;
-    EXPECT_EQ(law.step(m, r, out), Status::non_finite_input);
-    EXPECT_EQ(out.torque_B, policy == FailurePolicy::hold_last ? good.torque_B : Vec3::Zero());
+    adcs::EulerTrackingInput in;
+    in.state.theta_BN_rad = Vec3(0.002, -0.002, 0.001);  // inside the funnel: rho0 = 0.3 deg
+    adcs::BodyTorque good, out;
+    ASSERT_TRUE(adcs::usable(law.step(in, good)));
+    ASSERT_GT(good.torque_B_Nm.norm(), 0.0);
+    in.t_s = 1e-4;
+    in.state.omega_BN_B(0) = kNaN;
+    EXPECT_EQ(law.step(in, out), Status::non_finite_input);
+    EXPECT_EQ(out.torque_B_Nm, policy == FailurePolicy::hold_last ? good.torque_B_Nm : Vec3::Zero());
   }
 }
 
@@ -101,23 +101,24 @@ TEST(FailurePolicy, PidAndAdrcZeroOrHold) {
     pp.kp = Vec3(1, 2, 3);
     pp.on_failure = policy;
     adcs::Pid<3> pid(pp);
-    Vec3 good, out = Vec3::Constant(-9.0);
-    ASSERT_EQ(pid.step(Vec3(1, 1, 1), Vec3::Zero(), good), Status::ok);
-    EXPECT_EQ(pid.step(Vec3(kNaN, 0, 0), Vec3::Zero(), out), Status::non_finite_input);
-    EXPECT_EQ(out, policy == FailurePolicy::hold_last ? good : Vec3::Zero());
+    adcs::PidOutput<3> good, out;
+    out.u = Vec3::Constant(-9.0);
+    ASSERT_EQ(pid.step(adcs::PidInput<3>{Vec3(1, 1, 1), Vec3::Zero()}, good), Status::ok);
+    EXPECT_EQ(pid.step(adcs::PidInput<3>{Vec3(kNaN, 0, 0), Vec3::Zero()}, out), Status::non_finite_input);
+    EXPECT_EQ(out.u, policy == FailurePolicy::hold_last ? good.u : Vec3::Zero());
 
     adcs::DragFreeAdrcParams ap;
     ap.on_failure = policy;
     adcs::DragFreeAdrc adrc(ap);
-    adcs::Vec<27> x = adcs::Vec<27>::Zero();
-    x(adcs::DragFreeIndex::r) = 1e-7;
-    x(adcs::DragFreeIndex::phi_sc) = 1e-6;
-    adcs::Vec<9> u_good, u = adcs::Vec<9>::Constant(-9.0);
-    ASSERT_TRUE(adcs::usable(adrc.step(x, Vec3::Zero(), Vec3::Zero(), u_good)));
-    ASSERT_GT(u_good.norm(), 0.0);
-    x(0) = kNaN;
-    EXPECT_EQ(adrc.step(x, Vec3::Zero(), Vec3::Zero(), u), Status::non_finite_input);
-    EXPECT_EQ(u, policy == FailurePolicy::hold_last ? u_good : adcs::Vec<9>::Zero());
+    adcs::DragFreeAdrcInput in;  // F_D_hat_N and phi_sc_cmd_rad zero
+    in.x_hat(adcs::DragFreeIndex::r) = 1e-7;
+    in.x_hat(adcs::DragFreeIndex::phi_sc) = 1e-6;
+    adcs::DragFreeActuation u_good, u = adcs::DragFreeActuation::from_stacked(adcs::Vec<9>::Constant(-9.0));
+    ASSERT_TRUE(adcs::usable(adrc.step(in, u_good)));
+    ASSERT_GT(u_good.stacked().norm(), 0.0);
+    in.x_hat(0) = kNaN;
+    EXPECT_EQ(adrc.step(in, u), Status::non_finite_input);
+    EXPECT_EQ(u.stacked(), policy == FailurePolicy::hold_last ? u_good.stacked() : adcs::Vec<9>::Zero());
   }
 }
 

@@ -26,6 +26,17 @@ Ctrl::Params controller_params(double alpha_F = 1e7, double alpha_G = 1e3) {
   return p;
 }
 
+// The law's input at the plant state x (exact measurements) with the reference r.
+Ctrl::Input measure(const Plant::State& x, const adcs::MrpReferenceSample& r = adcs::MrpReferenceSample{}) {
+  Ctrl::Input in;
+  in.state.sigma_BN = Plant::sigma_BN(x);
+  in.state.omega_BN_B = Plant::omega_BN_B(x);
+  in.actuators.gamma_rad = Plant::gamma(x);
+  in.actuators.Omega_rad_s = Plant::Omega_w(x);
+  in.reference = r;
+  return in;
+}
+
 // Closed loop on TP-CTRL: controller at 1 ms with ZOH, plant and σ_d by RK4 (1 ms).
 struct Loop {
   Plant plant;
@@ -51,16 +62,12 @@ struct Loop {
     const int n = static_cast<int>(std::lround(duration / h));
     const double t0 = t;
     for (int k = 0; k < n; ++k) {
-      Ctrl::Measurement m;
-      m.sigma_BN = Plant::sigma_BN(x);
-      m.omega_BN_B = Plant::omega_BN_B(x);
-      m.gamma = Plant::gamma(x);
-      m.Omega_w = Plant::Omega_w(x);
-      Ctrl::Command c;
-      if (ctrl.step(m, ref.sample(t, sigma_d), c) != Status::ok) ++nonok;
+      Ctrl::Output c;
+      if (ctrl.step(measure(x, ref.sample(t, sigma_d)), c) != Status::ok) ++nonok;
+      const adcs::Vec<7> u = c.stacked();
       // RK4 of [x; σ_d] with u held.
       auto f = [&](double tt, const Plant::State& xs, const Vec3& sd, Plant::State& dx, Vec3& dsd) {
-        plant.derivative(tt, xs, c.u, dx);
+        plant.derivative(tt, xs, u, dx);
         dsd = ref.sigma_dot(tt, sd);
       };
       Plant::State k1, k2, k3, k4;
@@ -109,16 +116,16 @@ TEST(HybridAdaptive, ParameterisationIsExactS8) {
   set_true_estimates(c, plant, Plant::State::Zero(), Vec3::Zero());
   std::srand(3);
   for (int k = 0; k < 20; ++k) {
-    Ctrl::Measurement m;
-    m.sigma_BN = 0.5 * Vec3::Random();
-    m.omega_BN_B = 0.02 * Vec3::Random();
-    m.gamma = adcs::Vec<4>::Random() * 3.0;
+    Ctrl::Input in;
+    in.state.sigma_BN = 0.5 * Vec3::Random();
+    in.state.omega_BN_B = 0.02 * Vec3::Random();
+    in.actuators.gamma_rad = adcs::Vec<4>::Random() * 3.0;
     Ctrl::Diagnostics d;
-    Ctrl::Command out;
+    Ctrl::Output out;
     Ctrl c2 = c;  // keep the estimates exact for every sample
-    ASSERT_TRUE(adcs::usable(c2.step(m, adcs::MrpReferenceSample{}, out, &d)));
-    const adcs::Mat<3, 7> X_true = -adcs::mrp_G(m.sigma_BN) * plant.J_n().inverse() *
-                                   pp.truth.Q_act(m.gamma);
+    ASSERT_TRUE(adcs::usable(c2.step(in, out, &d)));
+    const adcs::Mat<3, 7> X_true = -adcs::mrp_G(in.state.sigma_BN) * plant.J_n().inverse() *
+                                   pp.truth.Q_act(in.actuators.gamma_rad);
     EXPECT_LT((d.X - X_true).norm(), 1e-13 * X_true.norm()) << k;
   }
 }
@@ -150,7 +157,7 @@ TEST(HybridAdaptive, NoDeviationNoAdaptationTracksExactlyS14) {
   for (int k = 0; k < 2; ++k) {
     const double T = k == 0 ? 1e-3 : 5e-4;
     Ctrl::Params cp = controller_params(0.0, 0.0);
-    cp.control_period_s = T;
+    cp.period_s = T;
     Loop loop(pp, cp, Plant::State::Zero());
     loop.run(50.0, T);
     e_at[k] = loop.error().norm();
@@ -176,28 +183,26 @@ TEST(HybridAdaptive, CommandsArePhysicalRatesAndAccelerationsS15) {
   x.segment<4>(6) << 0.3, -0.1, 0.2, 0.4;
   cp.H_I_n = plant.momentum_N(x);
   Ctrl c(cp);
-  Ctrl::Measurement m;
-  m.sigma_BN = Plant::sigma_BN(x);
-  m.omega_BN_B = Plant::omega_BN_B(x);
-  m.gamma = Plant::gamma(x);
   adcs::MrpReferenceSample r;
   r.sigma_ddot << 1e-4, -2e-4, 3e-4;
-  Ctrl::Command out;
+  const Ctrl::Input in = measure(x, r);
+  const Vec3& sigma = in.state.sigma_BN;
+  const Vec3& omega = in.state.omega_BN_B;
+  Ctrl::Output out;
   Ctrl::Diagnostics d;
-  ASSERT_EQ(c.step(m, r, out, &d), Status::ok);
+  ASSERT_EQ(c.step(in, out, &d), Status::ok);
 
-  const adcs::Mat3 GJ = adcs::mrp_G(m.sigma_BN) * c.J_n().inverse();
-  const adcs::Mat<3, 4> T = pp.nominal.A_ct(m.gamma);
+  const adcs::Mat3 GJ = adcs::mrp_G(sigma) * c.J_n().inverse();
+  const adcs::Mat<3, 4> T = pp.nominal.A_ct(in.actuators.gamma_rad);
   for (int i = 0; i < 4; ++i)
     EXPECT_LT((d.X.col(i) + pp.nominal.h_cw(i) * GJ * T.col(i)).norm(), 1e-15) << i;
   for (int j = 0; j < 3; ++j)
     EXPECT_LT((d.X.col(4 + j) + pp.nominal.I_wws(j) * GJ * pp.nominal.A_ws.col(j)).norm(), 1e-15) << j;
 
   Plant::State dx;
-  plant.derivative(0.0, x, out.u, dx);
-  const Vec3 sigma_dot = adcs::mrp_G(m.sigma_BN) * m.omega_BN_B;
-  const Vec3 sigma_ddot = adcs::mrp_G_dot(m.sigma_BN, sigma_dot) * m.omega_BN_B +
-                          adcs::mrp_G(m.sigma_BN) * dx.segment<3>(3);
+  plant.derivative(0.0, x, out.stacked(), dx);
+  const Vec3 sigma_dot = adcs::mrp_G(sigma) * omega;
+  const Vec3 sigma_ddot = adcs::mrp_G_dot(sigma, sigma_dot) * omega + adcs::mrp_G(sigma) * dx.segment<3>(3);
   const Vec3 asked = -c.K() * d.e + r.sigma_ddot;  // eq. (24) with the exact model
   EXPECT_LT((sigma_ddot - asked).norm(), 1e-12 * asked.norm());
 
@@ -207,9 +212,9 @@ TEST(HybridAdaptive, CommandsArePhysicalRatesAndAccelerationsS15) {
   cp10.nominal.J_s -= 9.0 * 0.02 * adcs::Mat3::Identity();  // keep J_n: the wheels are on the axes
   Ctrl c10(cp10);
   ASSERT_NEAR((c10.J_n() - c.J_n()).norm(), 0.0, 1e-12);
-  Ctrl::Command out10;
-  ASSERT_EQ(c10.step(m, r, out10), Status::ok);
-  EXPECT_LT((10.0 * out10.u - out.u).norm(), 1e-12 * out.u.norm());
+  Ctrl::Output out10;
+  ASSERT_EQ(c10.step(in, out10), Status::ok);
+  EXPECT_LT((10.0 * out10.stacked() - out.stacked()).norm(), 1e-12 * out.stacked().norm());
 }
 
 TEST(HybridAdaptive, NormalizedStepIsThePaperLawWhenTheLoopGainIsSmall) {
@@ -224,23 +229,22 @@ TEST(HybridAdaptive, NormalizedStepIsThePaperLawWhenTheLoopGainIsSmall) {
   bad.max_step_gain = 0.0;
   EXPECT_EQ(Ctrl(bad).status(), Status::invalid_parameter);
 
-  Ctrl::Measurement m;
-  m.sigma_BN << 0.8, -0.5, 0.3;
-  m.omega_BN_B << 0.03, -0.02, 0.04;
-  m.gamma << 0.1, 0.2, -0.3, 0.4;
-  adcs::MrpReferenceSample r;
-  r.sigma << 0.79, -0.49, 0.31;
+  Ctrl::Input in;
+  in.state.sigma_BN << 0.8, -0.5, 0.3;
+  in.state.omega_BN_B << 0.03, -0.02, 0.04;
+  in.actuators.gamma_rad << 0.1, 0.2, -0.3, 0.4;
+  in.reference.sigma << 0.79, -0.49, 0.31;
   for (double T : {1e-6, 10.0}) {
     Ctrl::Params pe = controller_params();
-    pe.control_period_s = T;
+    pe.period_s = T;
     Ctrl::Params pn = pe;
     pn.adaptation_step = adcs::AdaptationStep::normalized;
     Ctrl ce(pe), cn(pn);
-    Ctrl::Command oe, on;
+    Ctrl::Output oe, on;
     Ctrl::Diagnostics dn;
-    ASSERT_TRUE(adcs::usable(ce.step(m, r, oe)));
-    ASSERT_TRUE(adcs::usable(cn.step(m, r, on, &dn)));
-    EXPECT_EQ(oe.u, on.u);  // the command uses the estimates before the update
+    ASSERT_TRUE(adcs::usable(ce.step(in, oe)));
+    ASSERT_TRUE(adcs::usable(cn.step(in, on, &dn)));
+    EXPECT_EQ(oe.stacked(), on.stacked());  // the command uses the estimates before the update
     const Vec3 de = ce.theta_F(), dn_F = cn.theta_F();
     ASSERT_GT(de.norm(), 0.0);
     EXPECT_NEAR(dn_F.dot(de) / (dn_F.norm() * de.norm()), 1.0, 1e-12);  // same direction
@@ -315,23 +319,22 @@ TEST(HybridAdaptive, BadInputHoldsCommandUnderHoldLastAndEstimates) {
   Ctrl::Params params = controller_params();
   params.on_failure = adcs::FailurePolicy::hold_last;  // default zero: test_failure_policy.cpp
   Ctrl c(params);
-  Ctrl::Measurement m;
-  m.sigma_BN << 0.01, 0.02, -0.01;
-  m.omega_BN_B << 1e-3, -2e-3, 5e-4;
-  adcs::MrpReferenceSample r;
-  Ctrl::Command good, out;
-  ASSERT_EQ(c.step(m, r, good), Status::ok);
+  Ctrl::Input in;
+  in.state.sigma_BN << 0.01, 0.02, -0.01;
+  in.state.omega_BN_B << 1e-3, -2e-3, 5e-4;
+  Ctrl::Output good, out;
+  ASSERT_EQ(c.step(in, good), Status::ok);
   const Vec3 thF = c.theta_F();
   const Vec6 thc = c.theta_cG(2);
   for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
-    Ctrl::Measurement mb = m;
-    mb.gamma(1) = bad;
-    EXPECT_EQ(c.step(mb, r, out), Status::non_finite_input);
-    EXPECT_EQ(out.u, good.u);
-    adcs::MrpReferenceSample rb;
-    rb.sigma_ddot(2) = bad;
-    EXPECT_EQ(c.step(m, rb, out), Status::non_finite_input);
-    EXPECT_EQ(out.u, good.u);
+    Ctrl::Input mb = in;
+    mb.actuators.gamma_rad(1) = bad;
+    EXPECT_EQ(c.step(mb, out), Status::non_finite_input);
+    EXPECT_EQ(out.stacked(), good.stacked());
+    Ctrl::Input rb = in;
+    rb.reference.sigma_ddot(2) = bad;
+    EXPECT_EQ(c.step(rb, out), Status::non_finite_input);
+    EXPECT_EQ(out.stacked(), good.stacked());
   }
   EXPECT_EQ(c.theta_F(), thF);
   EXPECT_EQ(c.theta_cG(2), thc);
@@ -344,25 +347,25 @@ TEST(HybridAdaptive, BadInputHoldsCommandUnderHoldLastAndEstimates) {
   bad.delta_G = 0.0;
   Ctrl cb(bad);
   EXPECT_EQ(cb.status(), Status::invalid_parameter);
-  EXPECT_EQ(cb.step(m, r, out), Status::invalid_parameter);
-  EXPECT_EQ(out.u, adcs::Vec<7>::Zero());
+  EXPECT_EQ(cb.step(in, out), Status::invalid_parameter);
+  EXPECT_EQ(out.stacked(), adcs::Vec<7>::Zero());
 }
 
 TEST(HybridAdaptive, ResetRestoresInitialBehaviourBitForBit) {
   Ctrl a(controller_params());
-  Ctrl::Measurement m;
-  m.sigma_BN << 0.01, 0.02, -0.01;
-  m.omega_BN_B << 1e-3, -2e-3, 5e-4;
-  m.gamma << 0.1, -0.2, 0.05, 0.0;
-  adcs::MrpReferenceSample r;
-  Ctrl::Command first, again;
-  ASSERT_EQ(a.step(m, r, first), Status::ok);
-  for (int k = 0; k < 10; ++k) ASSERT_EQ(a.step(m, r, again), Status::ok);
+  Ctrl::Input in;
+  in.state.sigma_BN << 0.01, 0.02, -0.01;
+  in.state.omega_BN_B << 1e-3, -2e-3, 5e-4;
+  in.actuators.gamma_rad << 0.1, -0.2, 0.05, 0.0;
+  Ctrl::Output first, again;
+  ASSERT_EQ(a.step(in, first), Status::ok);
+  for (int k = 0; k < 10; ++k) ASSERT_EQ(a.step(in, again), Status::ok);
   EXPECT_NE(a.theta_F(), Vec3::Zero());
   a.reset();
   EXPECT_EQ(a.theta_F(), Vec3::Zero());
-  ASSERT_EQ(a.step(m, r, again), Status::ok);
-  EXPECT_EQ(std::memcmp(first.u.data(), again.u.data(), sizeof(double) * 7), 0);
+  ASSERT_EQ(a.step(in, again), Status::ok);
+  const adcs::Vec<7> u_first = first.stacked(), u_again = again.stacked();
+  EXPECT_EQ(std::memcmp(u_first.data(), u_again.data(), sizeof(double) * 7), 0);
 }
 // FDIR fallback: a failed gimbal gets exactly 0 (also in the held command), its Θ̂_G block stops
 // adapting, the others keep tracking; a bad mask is refused and changes nothing.
@@ -376,22 +379,18 @@ TEST(HybridAdaptive, FailedActuatorIsNeverCommandedAndTrackingContinues) {
   ASSERT_EQ(loop.ctrl.set_available(stuck), Status::ok);
   const Vec6 theta_c3 = loop.ctrl.theta_cG(2);
   // A rejected step right after the mask holds a command whose failed entry is already 0.
-  Ctrl::Measurement bad;
-  bad.sigma_BN(0) = std::numeric_limits<double>::quiet_NaN();
-  Ctrl::Command held;
-  EXPECT_EQ(loop.ctrl.step(bad, adcs::MrpReferenceSample{}, held), Status::non_finite_input);
-  EXPECT_EQ(held.u(2), 0.0);
+  Ctrl::Input bad;
+  bad.state.sigma_BN(0) = std::numeric_limits<double>::quiet_NaN();
+  Ctrl::Output held;
+  EXPECT_EQ(loop.ctrl.step(bad, held), Status::non_finite_input);
+  EXPECT_EQ(held.gamma_dot_rad_s(2), 0.0);
   loop.run(20.0);
   EXPECT_EQ(loop.nonok, 0);
   EXPECT_EQ(loop.ctrl.theta_cG(2), theta_c3);  // no regressor for an actuator that never moves
-  Ctrl::Measurement m;
-  m.sigma_BN = Plant::sigma_BN(loop.x);
-  m.omega_BN_B = Plant::omega_BN_B(loop.x);
-  m.gamma = Plant::gamma(loop.x);
-  Ctrl::Command c;
-  ASSERT_EQ(loop.ctrl.step(m, loop.ref.sample(loop.t, loop.sigma_d), c), Status::ok);
-  EXPECT_EQ(c.u(2), 0.0);
-  EXPECT_NE(c.u(3), 0.0);
+  Ctrl::Output c;
+  ASSERT_EQ(loop.ctrl.step(measure(loop.x, loop.ref.sample(loop.t, loop.sigma_d)), c), Status::ok);
+  EXPECT_EQ(c.gamma_dot_rad_s(2), 0.0);
+  EXPECT_NE(c.gamma_dot_rad_s(3), 0.0);
   EXPECT_LT(loop.error().head<3>().norm(), 1e-3);  // still tracking on the other six actuators
 }
 

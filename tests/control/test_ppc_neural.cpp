@@ -11,6 +11,7 @@
 #include "adcs/control/adaptive_tracking.hpp"
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
+#include "adcs/reference/sinusoidal_euler.hpp"
 
 namespace {
 using adcs::Status;
@@ -37,28 +38,32 @@ struct Loop {
     const double c = std::cos(0.0011 * tt), s = std::sin(0.0011 * tt);
     return 0.0045 * Vec3(c + 1.0, c + s, s + 1.0);
   }
-  typename Law::Measurement measure() const {
-    typename Law::Measurement m;
-    m.t = t;
-    m.angles = Plant::angles(x);
-    m.omega_BN_B = Plant::omega_BN_B(x);
+  // The law's input at the current time: the measured state with the reference r (by default
+  // the reference's own sample).
+  typename Law::Input measure(const adcs::EulerReferenceSample& r) const {
+    typename Law::Input m;
+    m.t_s = t;
+    m.state.theta_BN_rad = Plant::angles(x);
+    m.state.omega_BN_B = Plant::omega_BN_B(x);
+    m.reference = r;
     return m;
   }
+  typename Law::Input measure() const { return measure(ref.sample(t)); }
   // One period: step the law, then RK4 with the torque held. Returns the command.
   Vec3 step(typename Law::Diagnostics* diag = nullptr) { return step_with(ref.sample(t), diag); }
   Vec3 step_with(const adcs::EulerReferenceSample& r, typename Law::Diagnostics* diag = nullptr) {
-    typename Law::Command c;
-    if (law.step(measure(), r, c, diag) != Status::ok) ++nonok;
+    typename Law::Output c;
+    if (law.step(measure(r), c, diag) != Status::ok) ++nonok;
     auto f = [&](double tt, const Plant::State& xs) {
       Plant::State dx;
-      plant.derivative(tt, xs, Vec3(c.torque_B + d(tt)), dx);
+      plant.derivative(tt, xs, Vec3(c.torque_B_Nm + d(tt)), dx);
       return dx;
     };
     const Plant::State k1 = f(t, x), k2 = f(t + h / 2, x + h / 2 * k1), k3 = f(t + h / 2, x + h / 2 * k2),
                        k4 = f(t + h, x + h * k3);
     x += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
     t += h;
-    return c.torque_B;
+    return c.torque_B_Nm;
   }
   // The oracle: ϑ̈_d → ϑ̈_d − D̄ enters both laws exactly like D̂ = D̄ (u = B⁻¹(… + ϑ̈_d …)).
   // D̄ depends on u through η̈, so iterate to the fixed point (contraction ≈ ‖ΣF Fᵀ‖/‖M_eff‖ ≈ 0.04).
@@ -67,10 +72,10 @@ struct Loop {
     adcs::EulerReferenceSample ro = r;
     for (int it = 0; it < 8; ++it) {
       Law probe = law;
-      typename Law::Command c;
-      (void)probe.step(measure(), ro, c);
+      typename Law::Output c;
+      (void)probe.step(measure(ro), c);
       Plant::State dx;
-      plant.derivative(t, x, Vec3(c.torque_B + d(t)), dx);
+      plant.derivative(t, x, Vec3(c.torque_B_Nm + d(t)), dx);
       ro.angles_ddot = r.angles_ddot - plant.lumped_disturbance(x, d(t), dx);
     }
     return ro;
@@ -138,38 +143,38 @@ TEST(PpcNeural, BadInputGivesTheHeldCommandUnderHoldLastAndKeepsEstimates) {
   for (int k = 0; k < 50; ++k) loop.step();
   const adcs::Mat<7, 3> W = loop.law.weights();
   const double mu = loop.law.mu();
-  adcs::PpcNeural::Command last;
-  ASSERT_EQ(loop.law.step(loop.measure(), loop.ref.sample(loop.t), last), Status::ok);
+  adcs::PpcNeural::Output last;
+  ASSERT_EQ(loop.law.step(loop.measure(), last), Status::ok);
   const adcs::Mat<7, 3> W1 = loop.law.weights();
   const double mu1 = loop.law.mu();
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-  auto expect_rejected = [&](adcs::PpcNeural::Measurement m, adcs::EulerReferenceSample r, Status want) {
-    adcs::PpcNeural::Command out;
-    out.torque_B.setConstant(123.0);
-    EXPECT_EQ(loop.law.step(m, r, out), want);
-    EXPECT_EQ(out.torque_B, last.torque_B);  // last good command, never NaN
+  auto expect_rejected = [&](const adcs::PpcNeural::Input& m, Status want) {
+    adcs::PpcNeural::Output out;
+    out.torque_B_Nm.setConstant(123.0);
+    EXPECT_EQ(loop.law.step(m, out), want);
+    EXPECT_EQ(out.torque_B_Nm, last.torque_B_Nm);  // last good command, never NaN
     EXPECT_EQ(loop.law.weights(), W1);
     EXPECT_EQ(loop.law.mu(), mu1);
   };
-  adcs::PpcNeural::Measurement m = loop.measure();
-  m.angles(0) = nan;
-  expect_rejected(m, loop.ref.sample(loop.t), Status::non_finite_input);
+  adcs::PpcNeural::Input m = loop.measure();
+  m.state.theta_BN_rad(0) = nan;
+  expect_rejected(m, Status::non_finite_input);
   m = loop.measure();
-  m.omega_BN_B(2) = inf;
-  expect_rejected(m, loop.ref.sample(loop.t), Status::non_finite_input);
+  m.state.omega_BN_B(2) = inf;
+  expect_rejected(m, Status::non_finite_input);
   m = loop.measure();
-  m.t = nan;
-  expect_rejected(m, loop.ref.sample(loop.t), Status::non_finite_input);
+  m.t_s = nan;
+  expect_rejected(m, Status::non_finite_input);
   adcs::EulerReferenceSample r = loop.ref.sample(loop.t);
   r.angles_ddot(1) = nan;
-  expect_rejected(loop.measure(), r, Status::non_finite_input);
+  expect_rejected(loop.measure(r), Status::non_finite_input);
   m = loop.measure();
-  m.angles(1) = 0.5 * 3.14159265358979323846;  // gimbal lock of the x-y-z sequence
-  expect_rejected(m, loop.ref.sample(loop.t), Status::singular);
+  m.state.theta_BN_rad(1) = 0.5 * 3.14159265358979323846;  // gimbal lock of the x-y-z sequence
+  expect_rejected(m, Status::singular);
   // An error at/beyond its funnel edge: the transform is undefined -> out_of_range, nothing moves.
   m = loop.measure();
-  m.angles(0) += 1.0 * kD2r;
-  expect_rejected(m, loop.ref.sample(loop.t), Status::out_of_range);
+  m.state.theta_BN_rad(0) += 1.0 * kD2r;
+  expect_rejected(m, Status::out_of_range);
   (void)W;
   (void)mu;
 }
@@ -179,12 +184,12 @@ TEST(PpcNeural, RobustClampFlagsTheEdgeAndStaysFinite) {
   p.ppc.robust_clamp = true;
   Loop<adcs::PpcNeural> loop(p);
   for (int k = 0; k < 10; ++k) loop.step();
-  adcs::PpcNeural::Measurement m = loop.measure();
-  m.angles(0) += 1.0 * kD2r;
-  adcs::PpcNeural::Command out;
+  adcs::PpcNeural::Input m = loop.measure();
+  m.state.theta_BN_rad(0) += 1.0 * kD2r;
+  adcs::PpcNeural::Output out;
   adcs::PpcNeural::Diagnostics dg;
-  EXPECT_EQ(loop.law.step(m, loop.ref.sample(loop.t), out, &dg), Status::constraint_violated);
-  EXPECT_TRUE(adcs::all_finite(out.torque_B));
+  EXPECT_EQ(loop.law.step(m, out, &dg), Status::constraint_violated);
+  EXPECT_TRUE(adcs::all_finite(out.torque_B_Nm));
   EXPECT_LE(dg.funnel_margin, 0.0);
   EXPECT_TRUE(std::isfinite(loop.law.mu()));
 }
@@ -193,11 +198,11 @@ TEST(PpcNeural, FirstErrorOutsideTheFunnelIsRefusedWithoutRecovery) {
   adcs::PpcNeuralParams none = ppc_params();
   none.ppc.recovery = adcs::FunnelRecovery::none;
   adcs::PpcNeural law(none);
-  adcs::PpcNeural::Measurement m;
-  m.angles = Vec3(0.35, 0.0, 0.0) * kD2r;  // |e_1(0)| > ρ0 = 0.3°
-  adcs::PpcNeural::Command out;
-  EXPECT_EQ(law.step(m, adcs::EulerReferenceSample{}, out), Status::out_of_range);
-  EXPECT_EQ(out.torque_B, Vec3::Zero());
+  adcs::PpcNeural::Input m;
+  m.state.theta_BN_rad = Vec3(0.35, 0.0, 0.0) * kD2r;  // |e_1(0)| > ρ0 = 0.3°
+  adcs::PpcNeural::Output out;
+  EXPECT_EQ(law.step(m, out), Status::out_of_range);
+  EXPECT_EQ(out.torque_B_Nm, Vec3::Zero());
   adcs::PpcNeuralParams bad = ppc_params();
   bad.gains.K(1) = 0.0;
   EXPECT_EQ(adcs::PpcNeural(bad).status(), Status::invalid_parameter);
@@ -217,21 +222,21 @@ TEST(PpcNeural, FunnelViolationReopensTheFunnelCountedAndFinite) {
   for (int k = 0; k < 50; ++k) loop.step();
   ASSERT_EQ(loop.nonok, 0);
   const double mu = loop.law.mu();
-  adcs::PpcNeural::Measurement m = loop.measure();
-  m.angles(0) += 1.0 * kD2r;  // far beyond rho(t) < 0.3 deg
-  adcs::PpcNeural::Command out;
+  adcs::PpcNeural::Input m = loop.measure();
+  m.state.theta_BN_rad(0) += 1.0 * kD2r;  // far beyond rho(t) < 0.3 deg
+  adcs::PpcNeural::Output out;
   adcs::PpcNeural::Diagnostics dg;
-  EXPECT_EQ(loop.law.step(m, loop.ref.sample(loop.t), out, &dg), Status::constraint_violated);
+  EXPECT_EQ(loop.law.step(m, out, &dg), Status::constraint_violated);
   EXPECT_EQ(loop.law.funnel_recoveries(), 1);
   EXPECT_TRUE(dg.funnel_reopened);
   EXPECT_GT(dg.funnel_margin, 0.0);  // inside the re-opened funnel
-  EXPECT_TRUE(adcs::all_finite(out.torque_B));
-  EXPECT_NE(out.torque_B, Vec3::Zero());  // the law's command, not the failure command
+  EXPECT_TRUE(adcs::all_finite(out.torque_B_Nm));
+  EXPECT_NE(out.torque_B_Nm, Vec3::Zero());  // the law's command, not the failure command
   EXPECT_NE(loop.law.mu(), mu);           // the estimates carry on
   EXPECT_EQ(loop.law.funnel().start_time(0), loop.t);
   EXPECT_EQ(loop.law.funnel().start_time(1), 0.0);  // channels inside keep their funnel
   // Back to the true state: inside the (wider) funnel, ordinary steps, no new recovery.
-  EXPECT_EQ(loop.law.step(loop.measure(), loop.ref.sample(loop.t), out, &dg), Status::ok);
+  EXPECT_EQ(loop.law.step(loop.measure(), out, &dg), Status::ok);
   EXPECT_FALSE(dg.funnel_reopened);
   EXPECT_EQ(loop.law.funnel_recoveries(), 1);
   loop.law.reset();
@@ -240,12 +245,12 @@ TEST(PpcNeural, FunnelViolationReopensTheFunnelCountedAndFinite) {
 
 TEST(PpcNeural, FirstErrorOutsideTheFunnelReopensIt) {
   adcs::PpcNeural law(ppc_params());
-  adcs::PpcNeural::Measurement m;
-  m.angles = Vec3(0.35, 0.1, -0.1) * kD2r;  // |e_1(0)| > rho0 = 0.3 deg
-  adcs::PpcNeural::Command out;
-  EXPECT_EQ(law.step(m, adcs::EulerReferenceSample{}, out), Status::constraint_violated);
+  adcs::PpcNeural::Input m;
+  m.state.theta_BN_rad = Vec3(0.35, 0.1, -0.1) * kD2r;  // |e_1(0)| > rho0 = 0.3 deg
+  adcs::PpcNeural::Output out;
+  EXPECT_EQ(law.step(m, out), Status::constraint_violated);
   EXPECT_EQ(law.funnel_recoveries(), 1);
-  EXPECT_TRUE(adcs::all_finite(out.torque_B));
+  EXPECT_TRUE(adcs::all_finite(out.torque_B_Nm));
   EXPECT_DOUBLE_EQ(law.funnel().active(0).rho0, 0.35 * kD2r / adcs::PrescribedPerformance<3>::kReopenZ);
   EXPECT_EQ(law.funnel().active(1).rho0, 0.3 * kD2r);
   EXPECT_EQ(law.branch(2), adcs::PpcBranch::negative);
@@ -255,21 +260,21 @@ TEST(PpcNeural, FirstErrorOutsideTheFunnelReopensIt) {
 // (and mark the law started) from its e, so the next, good sample was judged on the wrong side.
 TEST(PpcNeural, RejectedFirstStepDoesNotFixTheFunnelBranches) {
   adcs::PpcNeural law(ppc_params());
-  adcs::PpcNeural::Measurement m;
-  m.angles = Vec3(-0.1, -0.1, -0.1) * kD2r;  // inside the funnel, on the negative side
-  m.omega_BN_B = Vec3::Constant(1e200);      // finite, but ω × Jω overflows: rejected
-  adcs::PpcNeural::Command out;
-  EXPECT_EQ(law.step(m, adcs::EulerReferenceSample{}, out), Status::out_of_range);
+  adcs::PpcNeural::Input m;
+  m.state.theta_BN_rad = Vec3(-0.1, -0.1, -0.1) * kD2r;  // inside the funnel, on the negative side
+  m.state.omega_BN_B = Vec3::Constant(1e200);      // finite, but ω × Jω overflows: rejected
+  adcs::PpcNeural::Output out;
+  EXPECT_EQ(law.step(m, out), Status::out_of_range);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(law.branch(i), adcs::PpcBranch::positive) << i;
-  EXPECT_EQ(out.torque_B, Vec3::Zero());
+  EXPECT_EQ(out.torque_B_Nm, Vec3::Zero());
   EXPECT_EQ(law.mu(), 0.0);
   // The first applied sample fixes the branches: positive errors are inside their funnel.
-  m.angles = Vec3(0.1, 0.1, 0.1) * kD2r;
-  m.omega_BN_B.setZero();
-  EXPECT_EQ(law.step(m, adcs::EulerReferenceSample{}, out), Status::ok);
+  m.state.theta_BN_rad = Vec3(0.1, 0.1, 0.1) * kD2r;
+  m.state.omega_BN_B.setZero();
+  EXPECT_EQ(law.step(m, out), Status::ok);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(law.branch(i), adcs::PpcBranch::positive) << i;
-  EXPECT_TRUE(adcs::all_finite(out.torque_B));
-  EXPECT_NE(out.torque_B, Vec3::Zero());
+  EXPECT_TRUE(adcs::all_finite(out.torque_B_Nm));
+  EXPECT_NE(out.torque_B_Nm, Vec3::Zero());
 }
 
 TEST(PpcNeural, ResetRestoresInitialBehaviourBitForBit) {
@@ -323,12 +328,12 @@ TEST(AdaptiveTracking, OracleClosedLoopIsMinusKsAndBadInputIsHeld) {
   for (int i = 0; i < 3; ++i)  // s_e(t) = s_e(0) e^{−K t} at t = 2 s − h (last diagnostics)
     EXPECT_NEAR(dg.s(i), s0(i) * std::exp(-p.gains.K(i) * (2.0 - loop.h)), 2e-3 * std::abs(s0(i))) << i;
 
-  adcs::AdaptiveTracking::Measurement m = loop.measure();
-  m.omega_BN_B(0) = std::numeric_limits<double>::quiet_NaN();
-  adcs::AdaptiveTracking::Command out;
+  adcs::AdaptiveTracking::Input m = loop.measure();
+  m.state.omega_BN_B(0) = std::numeric_limits<double>::quiet_NaN();
+  adcs::AdaptiveTracking::Output out;
   const adcs::Vec<7> before = loop.law.weights().col(0);
-  EXPECT_EQ(loop.law.step(m, loop.ref.sample(loop.t), out), Status::non_finite_input);
-  EXPECT_TRUE(adcs::all_finite(out.torque_B));
+  EXPECT_EQ(loop.law.step(m, out), Status::non_finite_input);
+  EXPECT_TRUE(adcs::all_finite(out.torque_B_Nm));
   EXPECT_EQ(loop.law.weights().col(0), before);
 }
 // Issue 15: the inertia has no default (it used to be the identity): a forgotten J is refused.

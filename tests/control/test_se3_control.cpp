@@ -10,6 +10,7 @@
 #include "../plant/se3_rk4.hpp"
 #include "adcs/control/ftsmc_se3.hpp"
 #include "adcs/control/prescribed_time_se3.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace {
 using adcs::Se3DesiredState;
@@ -19,7 +20,22 @@ using adcs::Se3SpacecraftState;
 using adcs::Se3TrackingError;
 using adcs::Status;
 using adcs::Vec6;
+using adcs::Wrench;
 using adcs_test::rk4_step;
+
+// The laws' parameters with the nominal model (truth = nominal) and, for the prescribed-time law,
+// ζ = 1.05 ϖ of seed 003's quantizer (the fields with no default).
+adcs::PrescribedTimeSe3Params ptc_params(const Se3ScenarioParams& sp) {
+  adcs::PrescribedTimeSe3Params p;
+  p.zeta = adcs::quantization_compensation_gain(adcs::seed003_quantizer_params());
+  p.nominal = adcs::se3_chaser_nominal_params(sp);
+  return p;
+}
+adcs::FtsmcSe3Params ftsmc_params(const Se3ScenarioParams& sp) {
+  adcs::FtsmcSe3Params p;
+  p.nominal = adcs::se3_chaser_nominal_params(sp);
+  return p;
+}
 
 struct Pair {
   Se3ScenarioParams sp;
@@ -42,6 +58,8 @@ struct Pair {
     EXPECT_EQ(adcs::se3_desired_state(target, t, sp, d), Status::ok);
     return d;
   }
+  // What the laws read: the chaser state and the desired state.
+  adcs::Se3TrackingInput input() const { return adcs::Se3TrackingInput{c, desired()}; }
   void advance(double dt, const Vec6& u) {
     ASSERT_TRUE(rk4_step(chaser, c, dt, u));
     ASSERT_TRUE(rk4_step(target, t, dt));
@@ -87,60 +105,61 @@ TEST(PrescribedTimeSe3, LyapunovFunctionDecreasesWithoutDisturbanceA11_9) {
   p.c.R_N = d0.R_N + d0.C_ND * adcs::Vec3(0.5, -0.3, 0.2);
   p.c.omega_BN_B = p.c.C_NB.transpose() * d0.C_ND * d0.omega_DN_D;
   p.c.v_B = p.c.C_NB.transpose() * (d0.C_ND * d0.v_D + (d0.C_ND * d0.omega_DN_D).cross(p.c.R_N - d0.R_N));
-  adcs::PrescribedTimeSe3Params gains;
+  adcs::PrescribedTimeSe3Params gains = ptc_params(p.sp);
   gains.zeta.setZero();  // Δq = 0: no quantizer, no compensation
-  adcs::PrescribedTimeSe3 law(gains, adcs::se3_chaser_nominal_params(p.sp));
+  adcs::PrescribedTimeSe3 law(gains);
   ASSERT_EQ(law.status(), Status::ok);
   double V_prev = INFINITY;
   for (int k = 0; k < 400; ++k) {
-    Vec6 u;
+    Wrench u;
     const double psi_before = law.psi_hat();
-    ASSERT_EQ(law.step(p.c, p.desired(), u), Status::ok);
+    ASSERT_EQ(law.step(p.input(), u), Status::ok);
     const adcs::PrescribedTimeSe3Terms& t = law.terms();
     const double V = 0.5 * t.z1.squaredNorm() + 0.5 * t.z2.squaredNorm() + psi_before * psi_before / (2.0 * gains.gamma);
     EXPECT_LE(V, V_prev * (1.0 + 1e-12)) << k;
     EXPECT_GE(law.psi_hat(), 0.0);
     V_prev = V;
-    for (int j = 0; j < 10; ++j) p.advance(gains.h / 10.0, u);
+    for (int j = 0; j < 10; ++j) p.advance(gains.period_s / 10.0, u.stacked());
   }
   EXPECT_LT(p.error().eta.norm(), 1e-4);
 }
 
 TEST(Se3Laws, BadInputHoldsTheCommandUnderHoldLastAndTheEstimate) {
   Pair p(0);
-  adcs::PrescribedTimeSe3Params pp;
+  adcs::PrescribedTimeSe3Params pp = ptc_params(p.sp);
   pp.on_failure = adcs::FailurePolicy::hold_last;
-  adcs::FtsmcSe3Params fp;
+  adcs::FtsmcSe3Params fp = ftsmc_params(p.sp);
   fp.on_failure = adcs::FailurePolicy::hold_last;
-  adcs::PrescribedTimeSe3 ptc(pp, adcs::se3_chaser_nominal_params(p.sp));
-  adcs::FtsmcSe3 fts(fp, adcs::se3_chaser_nominal_params(p.sp));
-  Vec6 u_ptc, u_fts;
-  ASSERT_EQ(ptc.step(p.c, p.desired(), u_ptc), Status::ok);
-  ASSERT_EQ(fts.step(p.c, p.desired(), u_fts), Status::ok);
+  adcs::PrescribedTimeSe3 ptc(pp);
+  adcs::FtsmcSe3 fts(fp);
+  Wrench u_ptc, u_fts;
+  ASSERT_EQ(ptc.step(p.input(), u_ptc), Status::ok);
+  ASSERT_EQ(fts.step(p.input(), u_fts), Status::ok);
   const double psi = ptc.psi_hat();
-  Se3SpacecraftState bad = p.c;
-  bad.v_B(1) = std::numeric_limits<double>::quiet_NaN();
-  Vec6 u;
-  EXPECT_EQ(ptc.step(bad, p.desired(), u), Status::non_finite_input);
-  EXPECT_EQ(u, u_ptc);
+  adcs::Se3TrackingInput bad = p.input();
+  bad.state.v_B(1) = std::numeric_limits<double>::quiet_NaN();
+  Wrench u;
+  EXPECT_EQ(ptc.step(bad, u), Status::non_finite_input);
+  EXPECT_EQ(u.stacked(), u_ptc.stacked());
   EXPECT_EQ(ptc.psi_hat(), psi);
-  EXPECT_EQ(fts.step(bad, p.desired(), u), Status::non_finite_input);
-  EXPECT_EQ(u, u_fts);
-  bad = p.c;
-  bad.R_N.setZero();  // at the Earth's centre: gravity undefined
-  EXPECT_EQ(ptc.step(bad, p.desired(), u), Status::out_of_range);
+  EXPECT_EQ(fts.step(bad, u), Status::non_finite_input);
+  EXPECT_EQ(u.stacked(), u_fts.stacked());
+  bad = p.input();
+  bad.state.R_N.setZero();  // at the Earth's centre: gravity undefined
+  EXPECT_EQ(ptc.step(bad, u), Status::out_of_range);
   EXPECT_EQ(ptc.psi_hat(), psi);
-  adcs::PrescribedTimeSe3Params wrong;
+  adcs::PrescribedTimeSe3Params wrong = ptc_params(p.sp);
   wrong.T = 0.0;
-  EXPECT_EQ(adcs::PrescribedTimeSe3(wrong, adcs::se3_chaser_nominal_params(p.sp)).status(), Status::invalid_parameter);
-  adcs::FtsmcSe3Params wrong_f;
+  EXPECT_EQ(adcs::PrescribedTimeSe3(wrong).status(), Status::invalid_parameter);
+  adcs::FtsmcSe3Params wrong_f = ftsmc_params(p.sp);
   wrong_f.phi = 0.0;
-  EXPECT_EQ(adcs::FtsmcSe3(wrong_f, adcs::se3_chaser_nominal_params(p.sp)).status(), Status::invalid_parameter);
+  EXPECT_EQ(adcs::FtsmcSe3(wrong_f).status(), Status::invalid_parameter);
   // Determinism: a second instance gives the same bits.
-  adcs::PrescribedTimeSe3 ptc2(adcs::PrescribedTimeSe3Params{}, adcs::se3_chaser_nominal_params(p.sp));
-  Vec6 u2;
-  ASSERT_EQ(ptc2.step(p.c, p.desired(), u2), Status::ok);
-  EXPECT_EQ(std::memcmp(u2.data(), u_ptc.data(), sizeof(double) * 6), 0);
+  adcs::PrescribedTimeSe3 ptc2(ptc_params(p.sp));
+  Wrench u2;
+  ASSERT_EQ(ptc2.step(p.input(), u2), Status::ok);
+  const Vec6 u2_stacked = u2.stacked(), u_ptc_stacked = u_ptc.stacked();
+  EXPECT_EQ(std::memcmp(u2_stacked.data(), u_ptc_stacked.data(), sizeof(double) * 6), 0);
 }
 
 // FTSMC drives the sliding variable and the error to zero (d = 0, no saturation).
@@ -149,11 +168,11 @@ TEST(FtsmcSe3, SlidingVariableAndErrorConverge) {
   const Se3DesiredState d0 = p.desired();
   p.c.C_NB = d0.C_ND * adcs::so3_exp(adcs::Vec3(0.05, 0.02, -0.03));
   p.c.R_N = d0.R_N + d0.C_ND * adcs::Vec3(1.0, -0.5, 0.3);
-  adcs::FtsmcSe3 law(adcs::FtsmcSe3Params{}, adcs::se3_chaser_nominal_params(p.sp));
-  Vec6 u;
+  adcs::FtsmcSe3 law(ftsmc_params(p.sp));
+  Wrench u;
   for (int k = 0; k < 1600; ++k) {
-    ASSERT_EQ(law.step(p.c, p.desired(), u), Status::ok);
-    for (int j = 0; j < 10; ++j) p.advance(0.0125, u);
+    ASSERT_EQ(law.step(p.input(), u), Status::ok);
+    for (int j = 0; j < 10; ++j) p.advance(0.0125, u.stacked());
   }
   EXPECT_LT(law.sliding_variable().norm(), 1e-4);
   EXPECT_LT(p.error().eta.norm(), 1e-4);

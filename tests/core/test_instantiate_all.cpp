@@ -1,5 +1,5 @@
 // Explicit instantiation of every class template of include/adcs (and the function templates of
-// the per-step kernels) with the sizes the library is used at (tests/target/instantiate_all.cpp,
+// the per-step kernels) with the sizes the library is used at (tests/target/instantiate_*.cpp,
 // the scenarios). The 27/36-state function templates (expm<36>, zoh_discretize<27, 9>,
 // keep_psd<27>) are left to the drag-free tests that instantiate them at those sizes: explicitly
 // instantiated here they cost g++ minutes of compile time for no extra line. A header's template code is only compiled, and so only seen by gcov, where it
@@ -20,23 +20,43 @@
 // includes them).
 #include "adcs/actuator/quantizer.hpp"
 #include "adcs/actuator/rw_allocation.hpp"
+#include "adcs/actuator/saturation.hpp"
+#include "adcs/actuator/vscmg_steering.hpp"
 #include "adcs/adapt/ppc.hpp"
 #include "adcs/adapt/rbf_compensator.hpp"
+#include "adcs/control/ftsmc_se3.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
+#include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/pid.hpp"
+#include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/estimate/eskf.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 #endif
 
 #ifdef ADCS_INSTANTIATE_ALL
 namespace adcs {
+// core/signals.hpp
+template struct WheelTorques<4>;
+template struct VscmgRates<4, 3>;
+template struct VscmgRates<4, 0>;
+template struct VscmgState<4, 3>;
+template struct VscmgState<4, 0>;
+template struct AccelerometerSample<3>;
 // actuator/
 template struct RwAllocationParams<4>;
 template class RwTorqueAllocator<4>;
+template struct SaturationParams<6>;
+template class Saturation<6>;
 template struct CompositeQuantizerParams<6>;
 template class CompositeQuantizer<6>;
+template struct SaturatedQuantizerParams<6>;
+template class SaturatedQuantizer<6>;
+template struct VscmgSteeringParams<4, 0>;
+template struct VscmgSteeringInput<4, 0>;
+template class VscmgSteering<4, 0>;
 template Status saturate_then_quantize<6>(const Vec<6>&, const Vec<6>&, CompositeQuantizer<6>&, Vec<6>&,
                                           std::uint32_t*) noexcept;
 template int saturate_each<7>(Vec<7>&, const Vec<7>&) noexcept;
@@ -65,20 +85,24 @@ template bool radial_safeguard<6>(Vec<6>&, double) noexcept;
 template bool radial_safeguard<3>(Vec<3>&, double) noexcept;
 // control/
 template struct MrpPdParams<4>;
-template struct MrpPdMeasurement<4>;
+template struct MrpPdInput<4>;
 template class MrpPd<4>;
 template class MrpPd<3>;
 template struct HybridAdaptiveParams<4, 3>;
-template struct HybridAdaptiveMeasurement<4, 3>;
-template struct HybridAdaptiveCommand<4, 3>;
+template struct HybridAdaptiveInput<4, 3>;
 template struct HybridAdaptiveDiagnostics<4, 3>;
 template class HybridAdaptive<4, 3>;
 template struct PidParams<1>;
+template struct PidInput<1>;
+template struct PidOutput<1>;
+template struct PidDiagnostics<1>;
 template class Pid<1>;
 template class Pid<3>;
 template Vec<6> sig<6>(const Vec<6>&, double) noexcept;
 // estimate/
 template struct EskfParams<27, 9, 9, 9>;
+template struct EskfInput<9, 9, 9>;
+template struct EskfOutput<27>;
 template class Eskf<27, 9, 9, 9>;
 template class Eskf<18, 9, 9, 6>;  // the two blocks of DragFreeEskf
 template class Eskf<9, 9, 9, 3>;
@@ -115,13 +139,20 @@ using adcs::Status;
 
 // Construction status of the instantiated classes from their default parameters: those whose
 // defaults are a usable configuration report ok, those that need the caller's geometry, model or
-// gains (wheel axes, inertia, filter matrices, K_P, RBF layer) refuse it instead of building a
+// gains (wheel axes, inertia, filter matrices, K_P, RBF layer, actuator limits, steering geometry,
+// nominal model, ζ, sample period) refuse it instead of building a
 // silently wrong object (docs/VALIDATION.md; tests/core/test_parameter_validation.cpp has one
 // test per refusal).
 TEST(InstantiateAll, DefaultParametersGiveTheDocumentedConstructionStatus) {
   EXPECT_EQ(adcs::RwTorqueAllocator<4>(adcs::RwAllocationParams<4>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ(adcs::Saturation<6>(adcs::SaturationParams<6>{}).status(), Status::invalid_parameter);  // limit
   EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::seed003_quantizer_params()).status(), Status::ok);
   EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::CompositeQuantizerParams<6>{}).status(), Status::ok);
+  EXPECT_EQ(adcs::SaturatedQuantizer<6>(adcs::SaturatedQuantizerParams<6>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ((adcs::VscmgSteering<4, 0>(adcs::VscmgSteeringParams<4, 0>{}).status()), Status::invalid_parameter);
+  EXPECT_EQ(adcs::MrpPd<4>(adcs::MrpPdParams<4>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ(adcs::PrescribedTimeSe3(adcs::PrescribedTimeSe3Params{}).status(), Status::invalid_parameter);  // ζ, J0
+  EXPECT_EQ(adcs::FtsmcSe3(adcs::FtsmcSe3Params{}).status(), Status::invalid_parameter);  // nominal model
   EXPECT_EQ(adcs::Pid<1>(adcs::PidParams<1>{}).status(), Status::invalid_parameter);
   EXPECT_EQ((adcs::Eskf<27, 9, 9, 9>(adcs::EskfParams<27, 9, 9, 9>{}).status()), Status::invalid_parameter);
   EXPECT_EQ((adcs::RbfCompensator<6, 7, 3>(adcs::RbfCompensatorParams<6, 7, 3>{}).status()),

@@ -16,6 +16,7 @@
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/actuator/saturation.hpp"
 #include "adcs/actuator/steering.hpp"
+#include "adcs/actuator/vscmg_steering.hpp"
 #include "adcs/adapt/normalized_step.hpp"
 #include "adcs/adapt/ppc.hpp"
 #include "adcs/adapt/projection.hpp"
@@ -30,6 +31,7 @@
 #include "adcs/control/pid.hpp"
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/control/prescribed_time_se3.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/core/validation.hpp"
 #include "adcs/estimate/drag_free_eskf.hpp"
 #include "adcs/estimate/eskf.hpp"
@@ -45,6 +47,7 @@
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
 #include "adcs/reference/sinusoidal_rate.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace {
 using adcs::Mat3;
@@ -158,11 +161,13 @@ TEST(ParameterValidationActuator, RwAllocatorHasNoDefaultGeometryAndRefusals) {
                       {"limit inf", [](P& p) { p.torque_limit = kInf; }}});
 }
 
-TEST(ParameterValidationActuator, RefusedRwAllocatorLeavesTheCommandUntouched) {
+// Issue 17: a failed step outputs zero wheel torques (the wheels coast); it used to leave u_s untouched.
+TEST(ParameterValidationActuator, RefusedRwAllocatorOutputsZeroWheelTorques) {
   const adcs::RwTorqueAllocator<4> a(adcs::RwAllocationParams<4>{});
-  adcs::Vec<4> u = adcs::Vec<4>::Constant(0.05);
-  EXPECT_EQ(a.allocate(Vec3(0.1, 0.0, 0.0), u), Status::invalid_parameter);
-  EXPECT_EQ(u, adcs::Vec<4>::Constant(0.05));
+  adcs::WheelTorques<4> u;
+  u.u_s_Nm.setConstant(0.05);
+  EXPECT_EQ(a.step(adcs::BodyTorque{Vec3(0.1, 0.0, 0.0)}, u), Status::invalid_parameter);
+  EXPECT_EQ(u.u_s_Nm, adcs::Vec<4>::Zero());
 }
 
 TEST(ParameterValidationActuator, SaturationLimitNotPositiveMeansNone) {
@@ -170,6 +175,73 @@ TEST(ParameterValidationActuator, SaturationLimitNotPositiveMeansNone) {
   adcs::Vec<3> u(5.0, -5.0, 5.0);
   EXPECT_EQ(adcs::saturate_each<3>(u, adcs::Vec<3>(kNaN, 0.0, 1.0)), 1);
   EXPECT_EQ(u, adcs::Vec<3>(5.0, -5.0, 1.0));
+}
+
+// The component (issue 17), unlike saturate_each, has parameters: a limit must be set and > 0;
+// +inf is accepted and means no limit on that channel.
+TEST(ParameterValidationActuator, SaturationHasNoDefaultLimitAndRefusals) {
+  using P = adcs::SaturationParams<3>;
+  const adcs::Saturation<3> unset(P{});
+  EXPECT_EQ(unset.status(), Status::invalid_parameter);  // limit unset
+  Vec3 out = Vec3::Constant(9.0);
+  EXPECT_EQ(unset.step(Vec3::Ones(), out), Status::invalid_parameter);
+  EXPECT_EQ(out, Vec3::Zero());  // the actuators idle
+  P good;
+  good.limit = Vec3(1.0, 2.0, kInf);  // +inf: no limit on the third channel
+  expect_refusals<P>(good, [](const P& p) { return adcs::Saturation<3>(p).status(); },
+                     {{"limit unset", [](P& p) { p.limit = P{}.limit; }},
+                      {"limit NaN", [](P& p) { p.limit(1) = kNaN; }},
+                      {"limit 0", [](P& p) { p.limit(0) = 0.0; }},
+                      {"limit < 0", [](P& p) { p.limit(2) = -1.0; }},
+                      {"limit -inf", [](P& p) { p.limit(2) = -kInf; }}});
+  P none;
+  none.limit.setConstant(kInf);
+  const adcs::Saturation<3> unlimited(none);
+  EXPECT_EQ(unlimited.status(), Status::ok);
+  EXPECT_EQ(unlimited.step(Vec3(1e6, -1e6, 3.0), out), Status::ok);
+  EXPECT_EQ(out, Vec3(1e6, -1e6, 3.0));
+}
+
+TEST(ParameterValidationActuator, SaturatedQuantizerHasNoDefaultLimitAndRefusals) {
+  using P = adcs::SaturatedQuantizerParams<6>;
+  adcs::SaturatedQuantizer<6> unset(P{});
+  EXPECT_EQ(unset.status(), Status::invalid_parameter);  // limit unset (the default channels are valid)
+  Vec6 out = Vec6::Constant(9.0);
+  EXPECT_EQ(unset.step(Vec6::Constant(0.1), out), Status::invalid_parameter);
+  EXPECT_EQ(out, Vec6::Zero());
+  EXPECT_EQ(unset.quantizer().transmissions(), 0u);
+  P good;
+  good.quantizer = adcs::seed003_quantizer_params();
+  good.limit << 0.5, 0.5, 0.5, 5.0, 5.0, 5.0;  // seed 003's actuator limits (exact levels, 5 sigma)
+  expect_refusals<P>(good, [](const P& p) { return adcs::SaturatedQuantizer<6>(p).status(); },
+                     {{"limit unset", [](P& p) { p.limit = P{}.limit; }},
+                      {"limit NaN", [](P& p) { p.limit(4) = kNaN; }},
+                      {"limit 0", [](P& p) { p.limit(0) = 0.0; }},
+                      {"limit < 0", [](P& p) { p.limit(3) = -5.0; }},
+                      {"channel refused", [](P& p) { p.quantizer.channel[2].sigma = 0.0; }}});
+}
+
+TEST(ParameterValidationActuator, VscmgSteeringHasNoDefaultGeometryAndRefusals) {
+  using P = adcs::VscmgSteeringParams<4, 3>;
+  using C = adcs::VscmgSteering<4, 3>;
+  const C unset(P{});
+  EXPECT_EQ(unset.status(), Status::invalid_parameter);  // geometry unset
+  adcs::VscmgRates<4, 3> out = adcs::VscmgRates<4, 3>::from_stacked(adcs::Vec<7>::Constant(9.0));
+  adcs::VscmgSteeringInput<4, 3> in;
+  in.request.torque_B_Nm = Vec3(1e-3, 0.0, 0.0);
+  EXPECT_EQ(unset.step(in, out), Status::invalid_parameter);
+  EXPECT_EQ(out.stacked(), adcs::Vec<7>::Zero());  // zero rates: the gimbals hold, the wheels coast
+  P good;
+  good.geometry = adcs::pyramid_4cmg_3rw_nominal();
+  expect_refusals<P>(good, [](const P& p) { return C(p).status(); },
+                     {{"geometry unset", [](P& p) { p.geometry = adcs::VscmgGeometry<4, 3>{}; }},
+                      {"spin axis NaN", [](P& p) { p.geometry.A_cs0(1, 2) = kNaN; }},
+                      {"transverse axis not unit", [](P& p) { p.geometry.A_ct0.col(3) *= 1.1; }},
+                      {"wheel axes unset", [](P& p) { p.geometry.A_ws.setConstant(adcs::kUnset); }},
+                      {"h_cw < 0", [](P& p) { p.geometry.h_cw(0) = -10.0; }},
+                      {"I_wws unset", [](P& p) { p.geometry.I_wws.setConstant(adcs::kUnset); }},
+                      {"robust threshold NaN", [](P& p) { p.robust.sigma_threshold = kNaN; }},
+                      {"escape lambda0 inf", [](P& p) { p.escape.lambda0 = kInf; }}});
 }
 
 TEST(ParameterValidationActuator, SteeringDefaultsValidAndRefusals) {
@@ -294,10 +366,28 @@ TEST(ParameterValidationAdapt, PrescribedPerformanceRefusals) {
 TEST(ParameterValidationControl, MrpPdHasNoDefaultsAndStepsRefusedToZeroTorque) {
   adcs::MrpPd<4> law(adcs::MrpPdParams<4>{});
   EXPECT_EQ(law.status(), Status::invalid_parameter);
-  adcs::MrpPdCommand out;
-  out.L_r_B = Vec3::Constant(9.0);
-  EXPECT_EQ(law.step({}, {}, out), Status::invalid_parameter);
-  EXPECT_EQ(out.L_r_B, Vec3::Zero());
+  adcs::BodyTorque out;
+  out.torque_B_Nm = Vec3::Constant(9.0);
+  EXPECT_EQ(law.step({}, out), Status::invalid_parameter);
+  EXPECT_EQ(out.torque_B_Nm, Vec3::Zero());
+}
+
+// Issue 17: the sample period is a parameter of every component, and MrpPd's has no default.
+TEST(ParameterValidationControl, MrpPdRefusesAMissingPeriod) {
+  using P = adcs::MrpPdParams<4>;
+  P good;
+  good.K = 3.0;
+  good.P = 40.0 * Mat3::Identity();
+  good.J_rw_B = Vec3(900, 800, 600).asDiagonal();
+  good.G_s_B = four_wheel_axes();
+  good.J_s.setConstant(0.1);
+  good.period_s = 0.1;
+  expect_refusals<P>(good, [](const P& p) { return adcs::MrpPd<4>(p).status(); },
+                     {{"period unset", [](P& p) { p.period_s = P{}.period_s; }},
+                      {"period NaN", [](P& p) { p.period_s = kNaN; }},
+                      {"period 0", [](P& p) { p.period_s = 0.0; }},
+                      {"period < 0", [](P& p) { p.period_s = -0.1; }},
+                      {"period inf", [](P& p) { p.period_s = kInf; }}});
 }
 
 TEST(ParameterValidationControl, PidHasNoDefaultProportionalGainAndRefusals) {
@@ -316,9 +406,9 @@ TEST(ParameterValidationControl, PidHasNoDefaultProportionalGainAndRefusals) {
                       {"period NaN", [](P& p) { p.period_s = kNaN; }},
                       {"period inf", [](P& p) { p.period_s = kInf; }}});
   adcs::Pid<3> refused(P{});
-  Vec3 out = Vec3::Constant(9.0);
-  EXPECT_EQ(refused.step(Vec3::Ones(), Vec3::Ones(), out), Status::invalid_parameter);
-  EXPECT_EQ(out, Vec3::Zero());
+  adcs::PidOutput<3> out{Vec3::Constant(9.0)};
+  EXPECT_EQ(refused.step(adcs::PidInput<3>{Vec3::Ones(), Vec3::Ones()}, out), Status::invalid_parameter);
+  EXPECT_EQ(out.u, Vec3::Zero());
 }
 
 TEST(ParameterValidationControl, DragFreeAdrcDefaultIsSeed004AndRefusals) {
@@ -336,13 +426,13 @@ TEST(ParameterValidationControl, DragFreeAdrcDefaultIsSeed004AndRefusals) {
                       {"PID kd < 0", [](P& p) { p.pid_kd = -9.0; }},
                       {"plant m_sc 0", [](P& p) { p.plant.m_sc = 0.0; }},
                       {"plant I_sc not SPD", [](P& p) { p.plant.I_sc(2, 2) = -1.0; }},
-                      {"plant h NaN", [](P& p) { p.plant.h = kNaN; }}});
+                      {"plant period_s NaN", [](P& p) { p.plant.period_s = kNaN; }}});
   P bad;
   bad.limit = -1.0;
   adcs::DragFreeAdrc refused(bad);
-  adcs::Vec<9> u = adcs::Vec<9>::Constant(9.0);
-  EXPECT_EQ(refused.step(adcs::Vec<27>::Zero(), Vec3::Zero(), Vec3::Zero(), u), Status::invalid_parameter);
-  EXPECT_EQ(u, adcs::Vec<9>::Zero());
+  adcs::DragFreeActuation u = adcs::DragFreeActuation::from_stacked(adcs::Vec<9>::Constant(9.0));
+  EXPECT_EQ(refused.step(adcs::DragFreeAdrcInput{}, u), Status::invalid_parameter);
+  EXPECT_EQ(u.stacked(), adcs::Vec<9>::Zero());
 }
 
 TEST(ParameterValidationControl, NonsingularPowerDefaultIsSpecA8AndRefusals) {
@@ -362,9 +452,25 @@ adcs::Se3SpacecraftParams seed003_nominal() {
   return adcs::se3_chaser_nominal_params(adcs::Se3ScenarioParams{});
 }
 
+//! The SE(3) laws' parameters with the fields that have no default set: the nominal model (both
+//! laws) and, for the prescribed-time law, ζ = 1.05 ϖ of seed 003's quantizer.
+adcs::FtsmcSe3Params ftsmc_se3_params() {
+  adcs::FtsmcSe3Params p;
+  p.nominal = seed003_nominal();
+  return p;
+}
+
+adcs::PrescribedTimeSe3Params prescribed_time_se3_params() {
+  adcs::PrescribedTimeSe3Params p;
+  p.zeta = adcs::quantization_compensation_gain(adcs::seed003_quantizer_params());
+  p.nominal = seed003_nominal();
+  return p;
+}
+
 TEST(ParameterValidationControl, FtsmcSe3DefaultIsSpecA8Table2AndRefusals) {
   using P = adcs::FtsmcSe3Params;
-  expect_refusals<P>(P{}, [](const P& p) { return adcs::FtsmcSe3(p, seed003_nominal()).status(); },
+  EXPECT_EQ(adcs::FtsmcSe3(P{}).status(), Status::invalid_parameter);  // nominal unset
+  expect_refusals<P>(ftsmc_se3_params(), [](const P& p) { return adcs::FtsmcSe3(p).status(); },
                      {{"p_s 0", [](P& p) { p.p_s = 0.0; }},
                       {"p_s 1", [](P& p) { p.p_s = 1.0; }},
                       {"eps 0", [](P& p) { p.eps = 0.0; }},
@@ -377,25 +483,29 @@ TEST(ParameterValidationControl, FtsmcSe3DefaultIsSpecA8Table2AndRefusals) {
                       {"k_s < 0", [](P& p) { p.k_s = -1.0; }},
                       {"k_s inf", [](P& p) { p.k_s = kInf; }},
                       {"phi 0", [](P& p) { p.phi = 0.0; }},
-                      {"phi inf", [](P& p) { p.phi = kInf; }}});
-  adcs::Se3SpacecraftParams bad_nominal = seed003_nominal();
-  bad_nominal.m = 0.0;
-  adcs::FtsmcSe3 refused(P{}, bad_nominal);
+                      {"phi inf", [](P& p) { p.phi = kInf; }},
+                      {"period_s 0", [](P& p) { p.period_s = 0.0; }},
+                      {"period_s NaN", [](P& p) { p.period_s = kNaN; }},
+                      {"nominal unset", [](P& p) { p.nominal = adcs::Se3SpacecraftParams{}; }}});
+  P bad_nominal = ftsmc_se3_params();
+  bad_nominal.nominal.m = 0.0;
+  adcs::FtsmcSe3 refused(bad_nominal);
   EXPECT_EQ(refused.status(), Status::invalid_parameter);
-  Vec6 u = Vec6::Constant(9.0);
-  EXPECT_EQ(refused.step({}, {}, u), Status::invalid_parameter);
-  EXPECT_EQ(u, Vec6::Zero());
+  adcs::Wrench u = adcs::Wrench::from_stacked(Vec6::Constant(9.0));
+  EXPECT_EQ(refused.step(adcs::Se3TrackingInput{}, u), Status::invalid_parameter);
+  EXPECT_EQ(u.stacked(), Vec6::Zero());
 }
 
 TEST(ParameterValidationControl, PrescribedTimeSe3DefaultIsSpecA8Table1AndRefusals) {
   using P = adcs::PrescribedTimeSe3Params;
-  expect_refusals<P>(P{}, [](const P& p) { return adcs::PrescribedTimeSe3(p, seed003_nominal()).status(); },
+  EXPECT_EQ(adcs::PrescribedTimeSe3(P{}).status(), Status::invalid_parameter);  // zeta, nominal unset
+  expect_refusals<P>(prescribed_time_se3_params(), [](const P& p) { return adcs::PrescribedTimeSe3(p).status(); },
                      {{"p 0", [](P& p) { p.p = 0.0; }},
                       {"p 1", [](P& p) { p.p = 1.0; }},
                       {"T 0", [](P& p) { p.T = 0.0; }},
                       {"T inf", [](P& p) { p.T = kInf; }},
-                      {"h 0", [](P& p) { p.h = 0.0; }},
-                      {"h NaN", [](P& p) { p.h = kNaN; }},
+                      {"period_s 0", [](P& p) { p.period_s = 0.0; }},
+                      {"period_s NaN", [](P& p) { p.period_s = kNaN; }},
                       {"a 0", [](P& p) { p.a = 0.0; }},
                       {"a inf", [](P& p) { p.a = kInf; }},
                       {"eps1 0", [](P& p) { p.eps1 = 0.0; }},
@@ -412,13 +522,15 @@ TEST(ParameterValidationControl, PrescribedTimeSe3DefaultIsSpecA8Table1AndRefusa
                       {"Lambda2 < 0", [](P& p) { p.Lambda2(2) = -1.0; }},
                       {"Upsilon2 inf", [](P& p) { p.Upsilon2(5) = kInf; }},
                       {"zeta < 0", [](P& p) { p.zeta(0) = -0.1; }},
-                      {"zeta NaN", [](P& p) { p.zeta(3) = kNaN; }}});
-  P bad;
-  bad.h = -0.125;
-  adcs::PrescribedTimeSe3 refused(bad, seed003_nominal());
-  Vec6 u = Vec6::Constant(9.0);
-  EXPECT_EQ(refused.step({}, {}, u), Status::invalid_parameter);
-  EXPECT_EQ(u, Vec6::Zero());
+                      {"zeta NaN", [](P& p) { p.zeta(3) = kNaN; }},
+                      {"zeta unset", [](P& p) { p.zeta = P{}.zeta; }},
+                      {"nominal unset", [](P& p) { p.nominal = adcs::Se3SpacecraftParams{}; }}});
+  P bad = prescribed_time_se3_params();
+  bad.period_s = -0.125;
+  adcs::PrescribedTimeSe3 refused(bad);
+  adcs::Wrench u = adcs::Wrench::from_stacked(Vec6::Constant(9.0));
+  EXPECT_EQ(refused.step(adcs::Se3TrackingInput{}, u), Status::invalid_parameter);
+  EXPECT_EQ(u.stacked(), Vec6::Zero());
   EXPECT_TRUE(std::isfinite(refused.psi_hat()));
 }
 
@@ -440,17 +552,16 @@ TEST(ParameterValidationControl, HybridAdaptiveHasNoDefaultGeometryAndRefusals) 
                       {"beta_G 0", [](P& p) { p.beta_G = 0.0; }},
                       {"delta_G < 0", [](P& p) { p.delta_G = -0.1; }},
                       {"H_I_n NaN", [](P& p) { p.H_I_n(1) = kNaN; }},
-                      {"period 0", [](P& p) { p.control_period_s = 0.0; }},
-                      {"period inf", [](P& p) { p.control_period_s = kInf; }},
+                      {"period 0", [](P& p) { p.period_s = 0.0; }},
+                      {"period inf", [](P& p) { p.period_s = kInf; }},
                       {"max_step_gain 0", [](P& p) { p.max_step_gain = 0.0; }},
                       {"steering bound 0", [](P& p) { p.steering.max_torque_error = 0.0; }},
                       {"nominal J_s unset", [](P& p) { p.nominal.J_s = Mat3::Constant(adcs::kUnset); }},
                       {"nominal h_cw < 0", [](P& p) { p.nominal.h_cw(0) = -10.0; }}});
   adcs::HybridAdaptive<4, 3> refused(P{});
-  adcs::HybridAdaptiveCommand<4, 3> out;
-  out.u.setConstant(9.0);
-  EXPECT_EQ(refused.step({}, {}, out), Status::invalid_parameter);
-  EXPECT_EQ(out.u, (adcs::Vec<7>::Zero()));
+  adcs::VscmgRates<4, 3> out = adcs::VscmgRates<4, 3>::from_stacked(adcs::Vec<7>::Constant(9.0));
+  EXPECT_EQ(refused.step({}, out), Status::invalid_parameter);
+  EXPECT_EQ(out.stacked(), (adcs::Vec<7>::Zero()));
 }
 
 TEST(ParameterValidationControl, EulerTrackingLawsHaveNoDefaultInertiaAndRefusals) {
@@ -463,17 +574,17 @@ TEST(ParameterValidationControl, EulerTrackingLawsHaveNoDefaultInertiaAndRefusal
                       {"lambda 0", [](G& g) { g.lambda(0) = 0.0; }},
                       {"K < 0", [](G& g) { g.K(1) = -0.1; }},
                       {"compensator refused", [](G& g) { g.compensator.sigma = 0.0; }},
-                      {"period 0", [](G& g) { g.control_period_s = 0.0; }},
-                      {"period NaN", [](G& g) { g.control_period_s = kNaN; }}});
+                      {"period 0", [](G& g) { g.period_s = 0.0; }},
+                      {"period NaN", [](G& g) { g.period_s = kNaN; }}});
   adcs::AdaptiveTracking refused(adcs::AdaptiveTrackingParams{});
-  adcs::EulerTrackingCommand out;
-  out.torque_B = Vec3::Constant(9.0);
-  EXPECT_EQ(refused.step({}, {}, out), Status::invalid_parameter);
-  EXPECT_EQ(out.torque_B, Vec3::Zero());
+  adcs::BodyTorque out;
+  out.torque_B_Nm = Vec3::Constant(9.0);
+  EXPECT_EQ(refused.step({}, out), Status::invalid_parameter);
+  EXPECT_EQ(out.torque_B_Nm, Vec3::Zero());
   adcs::PpcNeural refused_ppc(adcs::PpcNeuralParams{});
-  out.torque_B = Vec3::Constant(9.0);
-  EXPECT_EQ(refused_ppc.step({}, {}, out), Status::invalid_parameter);
-  EXPECT_EQ(out.torque_B, Vec3::Zero());
+  out.torque_B_Nm = Vec3::Constant(9.0);
+  EXPECT_EQ(refused_ppc.step({}, out), Status::invalid_parameter);
+  EXPECT_EQ(out.torque_B_Nm, Vec3::Zero());
 }
 
 // ============================================================================ estimate/
@@ -488,6 +599,7 @@ SmallEskf::Params small_eskf() {
   p.q(0) = 1e-4;
   p.S = adcs::Vec<2>(1e-6, 0.0).asDiagonal();  // PSD: no noise on the second input
   p.R = adcs::Vec<2>(1e-2, 1e-2).asDiagonal();
+  p.period_s = 0.1;  // the period of A_d, B_d above
   return p;
 }
 
@@ -508,7 +620,10 @@ TEST(ParameterValidationEstimate, EskfHasNoDefaultModelAndRefusals) {
                       {"x0 NaN", [](P& p) { p.x0(2) = kNaN; }},
                       {"P0 not PSD", [](P& p) { p.P0(1, 1) = -0.01; }},
                       {"P0 not symmetric", [](P& p) { p.P0(0, 2) = 0.001; }},
-                      {"P0 zero", [](P& p) { p.P0.setZero(); }}});
+                      {"P0 zero", [](P& p) { p.P0.setZero(); }},
+                      {"period unset", [](P& p) { p.period_s = P{}.period_s; }},
+                      {"period NaN", [](P& p) { p.period_s = kNaN; }},
+                      {"period 0", [](P& p) { p.period_s = 0.0; }}});
 }
 
 TEST(ParameterValidationEstimate, RefusedEskfLeavesItsEstimateUntouched) {
@@ -525,8 +640,9 @@ TEST(ParameterValidationEstimate, RefusedEskfLeavesItsEstimateUntouched) {
 }
 
 adcs::DragFreeEskf::Params drag_free_eskf_params() {
+  const adcs::DragFreeParams plant;
   adcs::DragFreeDiscrete d;
-  EXPECT_EQ(adcs::drag_free_discretize(adcs::DragFreeParams{}, d), Status::ok);
+  EXPECT_EQ(adcs::drag_free_discretize(plant, d), Status::ok);
   adcs::DragFreeEskf::Params e;
   e.A_d = d.A_d;
   e.B_d = d.B_d;
@@ -534,6 +650,7 @@ adcs::DragFreeEskf::Params drag_free_eskf_params() {
   e.C_d = d.C_d;
   e.q.head<6>().setConstant(8.5e-13);
   e.R = 5e-16 * adcs::Mat<9, 9>::Identity();
+  e.period_s = plant.period_s;  // the period A_d, B_d were discretised at (0.1 s)
   return e;
 }
 
@@ -551,7 +668,10 @@ TEST(ParameterValidationEstimate, DragFreeEskfHasNoDefaultModelAndRefusesCouplin
                       {"R couples the blocks", [](P& p) { p.R(0, 3) = p.R(3, 0) = 1e-17; }},
                       {"R unset", [](P& p) { p.R.setConstant(adcs::kUnset); }},
                       {"S not PSD", [](P& p) { p.S(4, 4) = -1e-16; }},
-                      {"q NaN", [](P& p) { p.q(7) = kNaN; }}});
+                      {"q NaN", [](P& p) { p.q(7) = kNaN; }},
+                      {"period unset", [](P& p) { p.period_s = P{}.period_s; }},
+                      {"period NaN", [](P& p) { p.period_s = kNaN; }},
+                      {"period 0", [](P& p) { p.period_s = 0.0; }}});
 }
 
 adcs::SaturatedEsfParams axis_esf() {
@@ -568,6 +688,7 @@ adcs::SaturatedEsfParams axis_esf() {
   e.R_a = 5e-24;
   e.y_min = plant.accel_min;
   e.y_max = plant.accel_max;
+  e.period_s = plant.period_s;  // the period the axis model was discretised at (0.1 s)
   return e;
 }
 
@@ -594,7 +715,10 @@ TEST(ParameterValidationEstimate, SaturatedEsfHasNoDefaultModelAndRefusals) {
                       {"range NaN", [](P& p) { p.y_max = kNaN; }},
                       {"x0 NaN", [](P& p) { p.x0(0) = kNaN; }},
                       {"P0 not PSD", [](P& p) { p.P0(2, 2) = -0.01; }},
-                      {"P0 zero", [](P& p) { p.P0.setZero(); }}});
+                      {"P0 zero", [](P& p) { p.P0.setZero(); }},
+                      {"period unset", [](P& p) { p.period_s = P{}.period_s; }},
+                      {"period NaN", [](P& p) { p.period_s = kNaN; }},
+                      {"period 0", [](P& p) { p.period_s = 0.0; }}});
 }
 
 TEST(ParameterValidationEstimate, FusionRefusesARefusedFilter) {
@@ -624,8 +748,8 @@ TEST(ParameterValidationPlant, DragFreeDefaultIsSeed004Table2AndRefusals) {
                       {"D_trans inf", [](P& p) { p.D_trans(1, 1) = kInf; }},
                       {"K_rot NaN", [](P& p) { p.K_rot(2, 0) = kNaN; }},
                       {"D_rot inf", [](P& p) { p.D_rot(2, 2) = kInf; }},
-                      {"h 0", [](P& p) { p.h = 0.0; }},
-                      {"h inf", [](P& p) { p.h = kInf; }},
+                      {"period_s 0", [](P& p) { p.period_s = 0.0; }},
+                      {"period_s inf", [](P& p) { p.period_s = kInf; }},
                       {"accel range empty", [](P& p) { p.accel_min = p.accel_max; }},
                       {"accel range inf", [](P& p) { p.accel_max = kInf; }},
                       {"ASD < 0", [](P& p) { p.asd_acc = -1e-12; }},

@@ -28,6 +28,7 @@ inline adcs::DragFreeEskf::Params eskf_params(const adcs::DragFreeDiscrete& d) {
       Vec3::Constant(n.sigma_T_tm * n.sigma_T_tm);
   e.S = s.asDiagonal();
   e.R = n.sigma_pos * n.sigma_pos * adcs::Mat<9, 9>::Identity();
+  e.period_s = p.period_s;  // the period A_d, B_d were discretised at (discrete() uses the defaults too)
   return e;
 }
 
@@ -45,6 +46,7 @@ inline adcs::SaturatedEsfParams esf_params(int axis, bool saturating = true) {
   e.q = std::pow(7.7e-3 * 1.2e-3 * 0.1, 2);
   e.S = n.sigma_F_sc * n.sigma_F_sc;
   e.R_a = n.sigma_acc * n.sigma_acc;
+  e.period_s = p.period_s;  // the period the axis model was discretised at
   if (saturating) {
     e.y_min = p.accel_min;
     e.y_max = p.accel_max;

@@ -100,6 +100,7 @@ adcs::EskfParams<3, 1, 1, 1> static_model_eskf() {
   p.B_e.setZero();
   p.C_d << 1, 0, 0;
   p.R(0, 0) = 1e-2;
+  p.period_s = adcs::DragFreeParams{}.period_s;  // A_d = I holds for any period: seed 004's 0.1 s
   return p;
 }
 
@@ -111,6 +112,7 @@ adcs::SaturatedEsfParams static_model_esf(const Eigen::RowVector3d& C) {
   q.C = C;
   q.D = 0.0;
   q.R_a = 1.0;
+  q.period_s = adcs::DragFreeParams{}.period_s;  // A_d = I holds for any period: seed 004's 0.1 s
   return q;
 }
 
@@ -177,19 +179,20 @@ TEST(Pid, OverflowIsRefusedAndTheIntegralKept) {
   p.kp(0) = 5.55;
   p.kd(0) = 9.0;
   adcs::Pid<1> pid(p);
-  adcs::Vec<1> out(3.0);
-  EXPECT_EQ(pid.step(adcs::Vec<1>(1e308), adcs::Vec<1>(0.0), out), Status::out_of_range);
-  EXPECT_EQ(out(0), 0.0);  // the failure command: zero (core/failure_policy.hpp)
+  const adcs::PidInput<1> huge{adcs::Vec<1>(1e308), adcs::Vec<1>(0.0)};
+  adcs::PidOutput<1> out{adcs::Vec<1>(3.0)};
+  EXPECT_EQ(pid.step(huge, out), Status::out_of_range);
+  EXPECT_EQ(out.u(0), 0.0);  // the failure command: zero (core/failure_policy.hpp)
   EXPECT_EQ(pid.integral()(0), 0.0);
   adcs::PidParams<1> pi;
   pi.kp(0) = 0.0;  // integral term alone
   pi.ki(0) = 1e-10;
   pi.period_s = 1.0;
   adcs::Pid<1> integ(pi);
-  ASSERT_EQ(integ.step(adcs::Vec<1>(1e308), adcs::Vec<1>(0.0), out), Status::ok);
-  EXPECT_EQ(integ.step(adcs::Vec<1>(1e308), adcs::Vec<1>(0.0), out), Status::out_of_range);  // 2e308
+  ASSERT_EQ(integ.step(huge, out), Status::ok);
+  EXPECT_EQ(integ.step(huge, out), Status::out_of_range);  // 2e308
   EXPECT_EQ(integ.integral()(0), 1e308);
-  EXPECT_TRUE(adcs::all_finite(out));
+  EXPECT_TRUE(adcs::all_finite(out.u));
 }
 
 TEST(Adrc, FalIsContinuousOddWithSlopeTenB11_8) {
@@ -246,21 +249,21 @@ TEST(Adrc, CommandsAreClippedToTheCubeAndBadInputHeldB11_11) {
   adcs::Vec<27> x = adcs::Vec<27>::Zero();
   x.segment<3>(Ix::r) << 0.5, -0.5, 0.1;  // far away: huge raw commands
   x.segment<3>(Ix::T_Dsc) << 1.0, -1.0, 0.0;
-  adcs::Vec<9> u;
-  EXPECT_EQ(c.step(x, Vec3(1.0, -1.0, 0.0), Vec3(0.3, 0.0, 0.0), u), Status::saturated);
-  EXPECT_LE(u.cwiseAbs().maxCoeff(), 0.03);
-  const adcs::Vec<9> last = u;
+  adcs::DragFreeActuation u;
+  EXPECT_EQ(c.step(adcs::DragFreeAdrcInput{x, Vec3(1.0, -1.0, 0.0), Vec3(0.3, 0.0, 0.0)}, u), Status::saturated);
+  EXPECT_LE(u.stacked().cwiseAbs().maxCoeff(), 0.03);
+  const adcs::Vec<9> last = u.stacked();
   const Vec3 ei = c.attitude_integral();
   x(0) = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(c.step(x, Vec3::Zero(), Vec3::Zero(), u), Status::non_finite_input);
-  EXPECT_EQ(u, last);
+  EXPECT_EQ(c.step(adcs::DragFreeAdrcInput{x, Vec3::Zero(), Vec3::Zero()}, u), Status::non_finite_input);
+  EXPECT_EQ(u.stacked(), last);
   EXPECT_EQ(c.attitude_integral(), ei);
   // Small errors: inside the cube, compensation terms present with the right signs (44)-(45).
   adcs::DragFreeAdrc c2(adcs::DragFreeAdrcParams{});
   adcs::Vec<27> x2 = adcs::Vec<27>::Zero();
   x2.segment<3>(Ix::T_Dsc) << 1e-3, 0, 0;
-  EXPECT_EQ(c2.step(x2, Vec3(2e-3, 0, 0), Vec3::Zero(), u), Status::ok);
-  EXPECT_NEAR(u(0), -1e-3, 1e-15);  // T_Csc = I_sc·0 − T̂_Dsc
-  EXPECT_NEAR(u(3), -2e-3, 1e-15);  // F_Csc = 0 + 0 − F̂_Dsc
+  EXPECT_EQ(c2.step(adcs::DragFreeAdrcInput{x2, Vec3(2e-3, 0, 0), Vec3::Zero()}, u), Status::ok);
+  EXPECT_NEAR(u.T_Csc_Nm(0), -1e-3, 1e-15);  // T_Csc = I_sc·0 − T̂_Dsc
+  EXPECT_NEAR(u.F_Csc_N(0), -2e-3, 1e-15);   // F_Csc = 0 + 0 − F̂_Dsc
 }
 }  // namespace

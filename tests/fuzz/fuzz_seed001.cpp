@@ -4,10 +4,12 @@
 // Asserted on every step (besides "no crash, no sanitizer report"):
 //  - the command is finite, whatever the status;
 //  - a non-finite input gives exactly non_finite_input;
-//  - a status that is not usable() ("nothing applied") leaves the command at the last applied one
-//    and every estimate / counter bitwise unchanged;
+//  - a status that is not usable() ("nothing applied") outputs the failure command (zero, or the
+//    last applied one under hold_last) and leaves every estimate / counter bitwise unchanged;
 //  - an applied step keeps the estimates finite and each Θ̂_G block inside its invariant ball
-//    ‖Θ̂_Gk‖² ≤ β + δ, and counts a safeguard event exactly when it returns constraint_violated.
+//    ‖Θ̂_Gk‖² ≤ β + δ, and counts a safeguard event exactly when it returns constraint_violated;
+//  - MrpPd: an applied step's diagnostics (σ_BR, ω_BR) are finite; RwTorqueAllocator: a usable
+//    status gives finite wheel torques within the limit (scale in (0, 1]), any other zero torques.
 #include <cmath>
 #include <cstdint>
 
@@ -15,6 +17,7 @@
 #include "adcs/actuator/steering.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "fuzz_common.hpp"
 
@@ -39,14 +42,14 @@ const Hybrid& hybrid_proto(int variant) {
       Hybrid([] {
         Hybrid::Params p;
         p.nominal = adcs::pyramid_4cmg_3rw_nominal();
-        p.control_period_s = 0.1;
+        p.period_s = 0.1;
         return p;
       }()),
       Hybrid([] {
         Hybrid::Params p;
         p.nominal = adcs::pyramid_4cmg_3rw_nominal();
         p.adaptation_step = adcs::AdaptationStep::normalized;
-        p.control_period_s = 0.1;
+        p.period_s = 0.1;
         p.on_failure = adcs::FailurePolicy::hold_last;
         return p;
       }()),
@@ -85,7 +88,7 @@ void fuzz_hybrid(fuzz::Reader& r) {
       FUZZ_CHECK(s == Status::non_finite_input, "HybridAdaptive::set_estimates: non-finite accepted");
     if (s != Status::ok) FUZZ_CHECK(HybridSnapshot(ctrl) == before, "set_estimates: rejected but changed");
   }
-  Hybrid::Command last;  // the held command (zero after construction)
+  adcs::Vec<Hybrid::L> last = adcs::Vec<Hybrid::L>::Zero();  // the held command [γ̇; Ω̇_w] (zero after construction)
   Hybrid::Diagnostics diag;
   for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
     if (config & 16) {  // FDIR: a fuzzed actuator mask (bits beyond M+N must be refused)
@@ -98,38 +101,40 @@ void fuzz_hybrid(fuzz::Reader& r) {
       } else {
         FUZZ_CHECK(sm == Status::ok && ctrl.available() == mask, "HybridAdaptive::set_available: refused");
         for (int i = 0; i < Hybrid::L; ++i)  // documented: the held command drops failed actuators
-          if (!((mask >> i) & 1u)) last.u(i) = 0.0;
+          if (!((mask >> i) & 1u)) last(i) = 0.0;
       }
     }
-    Hybrid::Measurement m;
-    m.sigma_BN = Vec3(0.01, -0.02, 0.03) + r.vec<3>();
-    m.omega_BN_B = Vec3(1e-3, 2e-3, -1e-3) + r.vec<3>();
-    m.gamma = r.vec<4>();
-    m.Omega_w = r.vec<3>();
-    adcs::MrpReferenceSample ref;
+    Hybrid::Input in;
+    in.state.sigma_BN = Vec3(0.01, -0.02, 0.03) + r.vec<3>();
+    in.state.omega_BN_B = Vec3(1e-3, 2e-3, -1e-3) + r.vec<3>();
+    in.actuators.gamma_rad = r.vec<4>();
+    in.actuators.Omega_rad_s = r.vec<3>();
+    adcs::MrpReferenceSample& ref = in.reference;
     ref.sigma = r.vec<3>();
     ref.sigma_dot = r.vec<3>();
     ref.sigma_ddot = r.vec<3>();
-    const bool finite_in = fuzz::finite(m.sigma_BN) && fuzz::finite(m.omega_BN_B) && fuzz::finite(m.gamma) &&
-                           fuzz::finite(m.Omega_w) && fuzz::finite(ref.sigma) && fuzz::finite(ref.sigma_dot) &&
-                           fuzz::finite(ref.sigma_ddot);
+    const bool finite_in = fuzz::finite(in.state.sigma_BN) && fuzz::finite(in.state.omega_BN_B) &&
+                           fuzz::finite(in.actuators.gamma_rad) && fuzz::finite(in.actuators.Omega_rad_s) &&
+                           fuzz::finite(ref.sigma) && fuzz::finite(ref.sigma_dot) && fuzz::finite(ref.sigma_ddot);
     const HybridSnapshot before(ctrl);
-    Hybrid::Command out;
-    out.u.setConstant(fuzz::kNaN);  // must be overwritten
-    const Status s = ctrl.step(m, ref, out, (config & 8) ? &diag : nullptr);
+    Hybrid::Output cmd;
+    cmd.gamma_dot_rad_s.setConstant(fuzz::kNaN);  // must be overwritten
+    cmd.Omega_dot_rad_s2.setConstant(fuzz::kNaN);
+    const Status s = ctrl.step(in, cmd, (config & 8) ? &diag : nullptr);
     fuzz::stat(0, "HybridAdaptive", s);
-    FUZZ_CHECK(fuzz::finite(out.u), "HybridAdaptive: non-finite command");
+    const adcs::Vec<Hybrid::L> out = cmd.stacked();  // [γ̇; Ω̇_w]
+    FUZZ_CHECK(fuzz::finite(out), "HybridAdaptive: non-finite command");
     fuzz::check_status_vs_input(s, finite_in, "HybridAdaptive: non-finite input not rejected");
     const HybridSnapshot after(ctrl);
     if (!fuzz::applied(s)) {
       FUZZ_CHECK(after == before, "HybridAdaptive: rejected step changed the estimates");
-      FUZZ_CHECK(fuzz::is_failure_command(ctrl.params().on_failure, out.u, last.u),
+      FUZZ_CHECK(fuzz::is_failure_command(ctrl.params().on_failure, out, last),
                  "HybridAdaptive: rejected step did not output the failure command");
       continue;
     }
     last = out;
     for (int i = 0; i < Hybrid::L; ++i)
-      if (!((ctrl.available() >> i) & 1u)) FUZZ_CHECK(out.u(i) == 0.0, "HybridAdaptive: failed actuator commanded");
+      if (!((ctrl.available() >> i) & 1u)) FUZZ_CHECK(out(i) == 0.0, "HybridAdaptive: failed actuator commanded");
     FUZZ_CHECK(fuzz::finite(after.theta_F) && fuzz::finite(after.theta_c) && fuzz::finite(after.theta_w),
                "HybridAdaptive: non-finite estimate committed");
     const double tol = bound * (1.0 + 1e-12);
@@ -234,10 +239,12 @@ Pd make_pd() {
   const double s = 1.0 / std::sqrt(3.0);
   p.G_s_B << 1, 0, 0, s, 0, 1, 0, s, 0, 0, 1, s;
   p.J_s.setConstant(0.1);
+  p.period_s = 0.1;  // [s] validated only (the law is static); rigid-rw-mrp-pd's 10 Hz
   return Pd(p);
 }
 
-// RwTorqueAllocator: usable statuses give a finite u_s within the limit; others leave it alone.
+// RwTorqueAllocator: usable statuses give a finite u_s within the limit; others zero torques (the
+// wheels coast).
 void check_allocation(const Vec3& L) {
   static const adcs::RwTorqueAllocator<4> alloc([] {
     adcs::RwAllocationParams<4> p;
@@ -246,52 +253,57 @@ void check_allocation(const Vec3& L) {
     p.torque_limit = 0.2;
     return p;
   }());
-  adcs::Vec<4> us = adcs::Vec<4>::Constant(-7.0);
-  const adcs::Vec<4> us0 = us;
-  const Status s = alloc.allocate(L, us);
+  adcs::WheelTorques<4> out;
+  out.u_s_Nm.setConstant(-7.0);  // must be overwritten, whatever the status
+  adcs::RwAllocationDiagnostics diag;
+  diag.scale = fuzz::kNaN;
+  const Status s = alloc.step(adcs::BodyTorque{L}, out, &diag);
+  const adcs::Vec<4>& us = out.u_s_Nm;
   fuzz::stat(3, "RwTorqueAllocator", s);
   fuzz::check_status_vs_input(s, fuzz::finite(L), "RwTorqueAllocator: non-finite input not rejected");
-  if (fuzz::applied(s))
+  if (fuzz::applied(s)) {
     FUZZ_CHECK(fuzz::finite(us) && us.cwiseAbs().maxCoeff() <= 0.2, "RwTorqueAllocator: bad wheel torques");
-  else
-    FUZZ_CHECK(fuzz::same_bits_mat(us, us0), "RwTorqueAllocator: rejected but wrote u_s");
+    FUZZ_CHECK(diag.scale > 0.0 && diag.scale <= 1.0 && (s == Status::saturated || diag.scale == 1.0),
+               "RwTorqueAllocator: bad scale diagnostic");
+  } else {
+    FUZZ_CHECK((us.array() == 0.0).all(), "RwTorqueAllocator: rejected but did not output zero wheel torques");
+  }
 }
 
 void fuzz_mrp_pd(fuzz::Reader& r) {
   static const Pd proto = make_pd();
   Pd ctrl = proto;
-  adcs::MrpPdCommand last;
+  adcs::BodyTorque last;
   for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
-    Pd::Measurement m;
-    m.sigma_BN = Vec3(0.1, -0.2, 0.3) + r.vec<3>();
-    m.omega_BN_B = Vec3(0.01, 0.0, -0.02) + r.vec<3>();
-    m.Omega = adcs::Vec<4>(10, 20, 30, 40) + r.vec<4>();
-    adcs::AttitudeReference ref;
+    Pd::Input in;
+    in.state.sigma_BN = Vec3(0.1, -0.2, 0.3) + r.vec<3>();
+    in.state.omega_BN_B = Vec3(0.01, 0.0, -0.02) + r.vec<3>();
+    in.Omega_rad_s = adcs::Vec<4>(10, 20, 30, 40) + r.vec<4>();
+    adcs::AttitudeReference& ref = in.reference;
     ref.sigma_RN = r.vec<3>();
     ref.omega_RN_N = r.vec<3>();
     ref.domega_RN_N = r.vec<3>();
-    const bool finite_in = fuzz::finite(m.sigma_BN) && fuzz::finite(m.omega_BN_B) && fuzz::finite(m.Omega) &&
-                           fuzz::finite(ref.sigma_RN) && fuzz::finite(ref.omega_RN_N) &&
-                           fuzz::finite(ref.domega_RN_N);
-    adcs::MrpPdCommand out;
-    out.L_r_B.setConstant(fuzz::kNaN);
-    const Status s = ctrl.step(m, ref, out);
+    const bool finite_in = fuzz::finite(in.state.sigma_BN) && fuzz::finite(in.state.omega_BN_B) &&
+                           fuzz::finite(in.Omega_rad_s) && fuzz::finite(ref.sigma_RN) &&
+                           fuzz::finite(ref.omega_RN_N) && fuzz::finite(ref.domega_RN_N);
+    adcs::BodyTorque out;
+    out.torque_B_Nm.setConstant(fuzz::kNaN);
+    Pd::Diagnostics diag;  // σ_BR, ω_BR: defined on an applied step
+    const Status s = ctrl.step(in, out, &diag);
     fuzz::stat(2, "MrpPd", s);
-    FUZZ_CHECK(fuzz::finite(out.L_r_B) && fuzz::finite(out.sigma_BR) && fuzz::finite(out.omega_BR_B),
-               "MrpPd: non-finite command");
+    FUZZ_CHECK(fuzz::finite(out.torque_B_Nm), "MrpPd: non-finite command");
     fuzz::check_status_vs_input(s, finite_in, "MrpPd: non-finite input not rejected");
     check_allocation(r.vec<3>());  // the allocator on its own, any request
     if (!fuzz::applied(s)) {
       const adcs::FailurePolicy policy = adcs::FailurePolicy::safe_command;  // make_pd(): the default
-      FUZZ_CHECK(fuzz::is_failure_command(policy, out.L_r_B, last.L_r_B) &&
-                     fuzz::is_failure_command(policy, out.sigma_BR, last.sigma_BR) &&
-                     fuzz::is_failure_command(policy, out.omega_BR_B, last.omega_BR_B),
+      FUZZ_CHECK(fuzz::is_failure_command(policy, out.torque_B_Nm, last.torque_B_Nm),
                  "MrpPd: rejected step did not output the failure command");
       continue;
     }
     FUZZ_CHECK(s == Status::ok, "MrpPd: undocumented usable status");
+    FUZZ_CHECK(fuzz::finite(diag.sigma_BR) && fuzz::finite(diag.omega_BR_B), "MrpPd: non-finite diagnostics");
     last = out;
-    check_allocation(out.L_r_B);
+    check_allocation(out.torque_B_Nm);
   }
 }
 }  // namespace

@@ -11,7 +11,7 @@
 //  - an applied step keeps Ŵ finite and μ̂ finite and >= 0 (spec B-S12), and reports
 //    constraint_violated only in robust-clamp mode or when it re-opened the funnel;
 //  - a re-opening (PPATC, recovery = reopen) is counted exactly once, only on an applied step,
-//    starts the re-opened channels at m.t with a valid performance function (ρ0' > ρ∞), and is
+//    starts the re-opened channels at in.t_s with a valid performance function (ρ0' > ρ∞), and is
 //    flagged in the diagnostics; without the recovery the count stays 0.
 //  - RbfCompensator::set_state (warm start) refuses non-finite values and μ̂ < 0 untouched.
 #include <array>
@@ -19,6 +19,9 @@
 
 #include "adcs/control/adaptive_tracking.hpp"
 #include "adcs/control/ppc_neural.hpp"
+#include "adcs/core/signals.hpp"
+#include "adcs/plant/flexible_configurations.hpp"  // seed002_tracking_gains()
+#include "adcs/reference/sinusoidal_euler.hpp"
 #include "fuzz_common.hpp"
 
 namespace {
@@ -92,34 +95,36 @@ void run(Law& law, int config, fuzz::Reader& r) {
   const adcs::SinusoidalEulerReference ref;
   const bool robust = std::is_same_v<Law, adcs::PpcNeural> && (config & 2);
   const bool reopen = std::is_same_v<Law, adcs::PpcNeural> && (config & 16);
-  adcs::EulerTrackingCommand last;  // the last applied command (zero after construction)
+  adcs::BodyTorque last;  // the last applied command (zero after construction)
   typename Law::Diagnostics diag;
   for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
-    adcs::EulerTrackingMeasurement m;
-    m.t = 1e-4 * k + r.value();
-    const adcs::EulerReferenceSample nominal = ref.sample(std::isfinite(m.t) ? m.t : 0.0);
-    m.angles = nominal.angles + Vec3(0.25, 0.15, -0.2) * kDeg + r.vec<3>();  // inside ρ0 = 0.3°
-    m.omega_BN_B = r.vec<3>();
-    adcs::EulerReferenceSample rs = nominal;
+    adcs::EulerTrackingInput in;
+    in.t_s = 1e-4 * k + r.value();
+    const adcs::EulerReferenceSample nominal = ref.sample(std::isfinite(in.t_s) ? in.t_s : 0.0);
+    in.state.theta_BN_rad = nominal.angles + Vec3(0.25, 0.15, -0.2) * kDeg + r.vec<3>();  // inside ρ0 = 0.3°
+    in.state.omega_BN_B = r.vec<3>();
+    adcs::EulerReferenceSample& rs = in.reference;
+    rs = nominal;
     rs.angles += r.vec<3>();
     rs.angles_dot += r.vec<3>();
     rs.angles_ddot += r.vec<3>();
-    const bool finite_in = fuzz::finite(m.t) && fuzz::finite(m.angles) && fuzz::finite(m.omega_BN_B) &&
-                           fuzz::finite(rs.angles) && fuzz::finite(rs.angles_dot) && fuzz::finite(rs.angles_ddot);
+    const bool finite_in = fuzz::finite(in.t_s) && fuzz::finite(in.state.theta_BN_rad) &&
+                           fuzz::finite(in.state.omega_BN_B) && fuzz::finite(rs.angles) &&
+                           fuzz::finite(rs.angles_dot) && fuzz::finite(rs.angles_ddot);
     const Snapshot<Law> before(law);
-    adcs::EulerTrackingCommand out;
-    out.torque_B.setConstant(fuzz::kNaN);  // must be overwritten
-    const Status s = law.step(m, rs, out, (config & 8) ? &diag : nullptr);
+    adcs::BodyTorque out;
+    out.torque_B_Nm.setConstant(fuzz::kNaN);  // must be overwritten
+    const Status s = law.step(in, out, (config & 8) ? &diag : nullptr);
     if constexpr (std::is_same_v<Law, adcs::PpcNeural>)
       fuzz::stat(0, "PpcNeural", s);
     else
       fuzz::stat(1, "AdaptiveTracking", s);
-    FUZZ_CHECK(fuzz::finite(out.torque_B), "Euler tracking law: non-finite command");
+    FUZZ_CHECK(fuzz::finite(out.torque_B_Nm), "Euler tracking law: non-finite command");
     fuzz::check_status_vs_input(s, finite_in, "Euler tracking law: non-finite input not rejected");
     const Snapshot<Law> after(law);
     if (!fuzz::applied(s)) {
       FUZZ_CHECK(after == before, "Euler tracking law: rejected step changed Ŵ, μ̂, the funnel or its count");
-      FUZZ_CHECK(fuzz::is_failure_command(adcs::FailurePolicy::safe_command, out.torque_B, last.torque_B),
+      FUZZ_CHECK(fuzz::is_failure_command(adcs::FailurePolicy::safe_command, out.torque_B_Nm, last.torque_B_Nm),
                  "Euler tracking law: rejected step did not output the failure command (zero torque)");
       continue;
     }
@@ -134,8 +139,8 @@ void run(Law& law, int config, fuzz::Reader& r) {
       for (int i = 0; i < 3 && reopened; ++i) {
         const auto u = static_cast<std::size_t>(i);
         if (fuzz::same_bits(after.t0[u], before.t0[u]) && fuzz::same_bits(after.rho0[u], before.rho0[u])) continue;
-        FUZZ_CHECK(fuzz::same_bits(after.t0[u], m.t) && adcs::valid(law.funnel().active(i)),
-                   "PpcNeural: re-opened channel not started at m.t with a valid performance function");
+        FUZZ_CHECK(fuzz::same_bits(after.t0[u], in.t_s) && adcs::valid(law.funnel().active(i)),
+                   "PpcNeural: re-opened channel not started at in.t_s with a valid performance function");
       }
     }
     FUZZ_CHECK(fuzz::finite(after.W) && fuzz::finite(after.mu) && after.mu >= 0.0,

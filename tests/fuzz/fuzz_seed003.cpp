@@ -6,8 +6,10 @@
 // Asserted on every step (besides "no crash, no sanitizer report"):
 //  - the wrench command u is finite, whatever the status;
 //  - a non-finite input gives exactly non_finite_input;
-//  - a non-ok step holds u at the last applied command and leaves ψ̂ and the logged terms (PTC) or
-//    the sliding variable (FTSMC) bitwise unchanged; an applied step keeps ψ̂ finite and >= 0;
+//  - a non-ok step outputs the failure command (zero wrench), keeps the last applied command and
+//    leaves ψ̂ and the logged terms (PTC) or the sliding variable (FTSMC) bitwise unchanged; an
+//    applied step keeps ψ̂ finite and >= 0 and, when asked for, reports the same terms / sliding
+//    variable in its diagnostics as the accessors;
 //  - quantizer: non-finite input / invalid channels leave u_q, the transmission mask and every
 //    counter untouched; an applied call has |Q(u) − u| <= ϖ per channel, counts exactly the
 //    channels whose level changed (mask bits = per-channel counters = total), is odd on the
@@ -22,6 +24,7 @@
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/math/so3.hpp"
 #include "fuzz_common.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace {
 using adcs::Status;
@@ -162,19 +165,31 @@ adcs::Se3SpacecraftState perturbed(const adcs::Se3SpacecraftState& x0, bool raw,
 template <class Law>
 void fuzz_law(int which, int config, fuzz::Reader& r) {
   const Scenario& sc = scenario();
-  static const adcs::PrescribedTimeSe3 ptc_proto(adcs::PrescribedTimeSe3Params{},
-                                                 adcs::se3_chaser_nominal_params(scenario().sp));
-  static const adcs::FtsmcSe3 ftsmc_proto(adcs::FtsmcSe3Params{}, adcs::se3_chaser_nominal_params(scenario().sp));
+  static const adcs::PrescribedTimeSe3 ptc_proto([] {
+    adcs::PrescribedTimeSe3Params p;  // spec Table 1 gains
+    p.zeta = adcs::quantization_compensation_gain(adcs::seed003_quantizer_params());  // ζ = 1.05 ϖ
+    p.nominal = adcs::se3_chaser_nominal_params(scenario().sp);
+    return p;
+  }());
+  static const adcs::FtsmcSe3 ftsmc_proto([] {
+    adcs::FtsmcSe3Params p;
+    p.nominal = adcs::se3_chaser_nominal_params(scenario().sp);
+    return p;
+  }());
   Law law = [&]() -> Law {
     if constexpr (std::is_same_v<Law, adcs::PrescribedTimeSe3>) return ptc_proto;
     else return ftsmc_proto;
   }();
   Quantizer q(adcs::seed003_quantizer_params());
   const bool raw = (config & 4) != 0;
+  const bool with_diag = (config & 8) != 0;  // consumes no input bytes
   Vec6 last = Vec6::Zero();  // the last applied command
   for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
-    const adcs::Se3SpacecraftState x = perturbed(sc.chaser[config & 3], raw, r);
-    adcs::Se3DesiredState d = sc.desired;
+    adcs::Se3TrackingInput in;
+    in.state = perturbed(sc.chaser[config & 3], raw, r);
+    const adcs::Se3SpacecraftState& x = in.state;
+    adcs::Se3DesiredState& d = in.desired;
+    d = sc.desired;
     d.C_ND = sc.desired.C_ND * adcs::so3_exp(r.vec<3>());
     d.R_N += r.vec<3>();
     d.omega_DN_D += r.vec<3>();
@@ -185,26 +200,32 @@ void fuzz_law(int which, int config, fuzz::Reader& r) {
                            fuzz::finite(x.v_B) && fuzz::finite(d.C_ND) && fuzz::finite(d.R_N) &&
                            fuzz::finite(d.omega_DN_D) && fuzz::finite(d.v_D) && fuzz::finite(d.omega_dot_D) &&
                            fuzz::finite(d.v_dot_D);
-    Vec6 u = Vec6::Constant(fuzz::kNaN);  // must be overwritten
+    adcs::Wrench w = adcs::Wrench::from_stacked(Vec6::Constant(fuzz::kNaN));  // must be overwritten
+    typename Law::Diagnostics diag;
     Status s;
     if constexpr (std::is_same_v<Law, adcs::PrescribedTimeSe3>) {
       const double psi0 = law.psi_hat();
       const adcs::PrescribedTimeSe3Terms terms0 = law.terms();
-      s = law.step(x, d, u);
+      s = law.step(in, w, with_diag ? &diag : nullptr);
       fuzz::stat(which, "PrescribedTimeSe3", s);
       if (!fuzz::applied(s)) {
         FUZZ_CHECK(fuzz::same_bits(law.psi_hat(), psi0) && fuzz::same_bits(law.terms(), terms0),
                    "PrescribedTimeSe3: rejected step changed psi_hat or the terms");
       } else {
         FUZZ_CHECK(fuzz::finite(law.psi_hat()) && law.psi_hat() >= 0.0, "PrescribedTimeSe3: bad psi_hat");
+        if (with_diag)
+          FUZZ_CHECK(fuzz::same_bits(diag, law.terms()), "PrescribedTimeSe3: diagnostics differ from terms()");
       }
     } else {
       const Vec6 s0 = law.sliding_variable();
-      s = law.step(x, d, u);
+      s = law.step(in, w, with_diag ? &diag : nullptr);
       fuzz::stat(which, "FtsmcSe3", s);
       if (!fuzz::applied(s))
         FUZZ_CHECK(fuzz::same_bits_mat(law.sliding_variable(), s0), "FtsmcSe3: rejected step changed s");
+      else if (with_diag)
+        FUZZ_CHECK(fuzz::same_bits_mat(diag.s, law.sliding_variable()), "FtsmcSe3: diagnostics differ from s");
     }
+    const Vec6 u = w.stacked();  // [M; F]
     FUZZ_CHECK(fuzz::finite(u), "SE(3) law: non-finite command");
     fuzz::check_status_vs_input(s, finite_in, "SE(3) law: non-finite input not rejected");
     if (!fuzz::applied(s)) {

@@ -54,6 +54,7 @@ adcs::DragFreeEskf::Params eskf_params(adcs::ThetaPolicy policy) {
   e.S = 1e-15 * adcs::Mat<9, 9>::Identity();
   e.R = 5e-16 * adcs::Mat<9, 9>::Identity();
   e.theta_policy = policy;
+  e.period_s = m.plant.period_s;  // h of the discretisation
   return e;
 }
 
@@ -70,6 +71,7 @@ adcs::SaturatedEsfParams esf_params(int axis, bool skip) {
   e.y_min = m.plant.accel_min;
   e.y_max = m.plant.accel_max;
   e.saturation = skip ? adcs::SaturationUpdate::skip : adcs::SaturationUpdate::truncated;
+  e.period_s = m.plant.period_s;
   return e;
 }
 
@@ -220,8 +222,9 @@ void fuzz_chain(int config, fuzz::Reader& r) {
         const Vec3 F(alg2[0].state()(2), alg2[1].state()(2), alg2[2].state()(2));
         const Vec3 F_D = F + r.vec<3>(), phi_cmd = r.vec<3>();
         const Vec3 ia = adrc.attitude_integral(), id = adrc.drag_free_integral();
-        Vec9 out = Vec9::Constant(fuzz::kNaN);
-        const Status s = adrc.step(x_hat, F_D, phi_cmd, out);
+        adcs::DragFreeActuation act = adcs::DragFreeActuation::from_stacked(Vec9::Constant(fuzz::kNaN));
+        const Status s = adrc.step(adcs::DragFreeAdrcInput{x_hat, F_D, phi_cmd}, act);
+        const Vec9 out = act.stacked();  // [T_Csc; F_Csc; T_Ctm]
         fuzz::stat(5, "DragFreeAdrc", s);
         FUZZ_CHECK(fuzz::finite(out), "DragFreeAdrc: non-finite command");
         fuzz::check_status_vs_input(s, fuzz::finite(x_hat) && fuzz::finite(F_D) && fuzz::finite(phi_cmd),
@@ -279,6 +282,7 @@ void fuzz_small_eskf(int config, fuzz::Reader& r) {
         p.q(0) = 8.5e-13;
         p.S(0, 0) = 1e-16;
         p.R(0, 0) = 1e-12;
+        p.period_s = models().plant.period_s;  // the axis model's h
         return p;
       }()),
       Small([] {
@@ -290,6 +294,7 @@ void fuzz_small_eskf(int config, fuzz::Reader& r) {
         p.q(0) = 1e-4;
         p.R(0, 0) = 1e-2;
         p.theta_policy = adcs::ThetaPolicy::fixed_initial;
+        p.period_s = 0.1;  // the h in A_d, B_d above
         return p;
       }())};
   Small f = protos[config & 1];
@@ -364,8 +369,10 @@ void fuzz_pid(int config, fuzz::Reader& r) {
   for (int k = 0; k < kMaxSteps && !r.empty(); ++k) {
     const Vec3 e_p = r.vec<3>(), e_d = r.vec<3>();
     const Vec3 i0 = pid.integral();
-    Vec3 out = last;
-    const Status s = pid.step(e_p, e_d, out);
+    adcs::PidOutput<3> po;
+    po.u = last;
+    const Status s = pid.step(adcs::PidInput<3>{e_p, e_d}, po);
+    const Vec3& out = po.u;
     const Vec3 held = last_good;
     fuzz::stat(7, "Pid<3>", s);
     fuzz::check_status_vs_input(s, fuzz::finite(e_p) && fuzz::finite(e_d), "Pid: non-finite input not rejected");

@@ -14,6 +14,7 @@
 #include "adcs/plant/orbit_environment.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
 #include "se3_rk4.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace {
 using adcs::Mat3;

@@ -8,10 +8,12 @@
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/actuator/saturation.hpp"
 #include "adcs/actuator/steering.hpp"
+#include "adcs/actuator/vscmg_steering.hpp"
 #include "adcs/adapt/normalized_step.hpp"
 #include "adcs/adapt/projection.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/math/euler.hpp"
 #include "adcs/math/lyapunov.hpp"
 #include "adcs/math/mrp.hpp"
@@ -29,6 +31,8 @@ template class VscmgFullPlant<4, 3>;
 template class VscmgCtrlPlant<4, 3>;
 template struct VscmgGeometry<4, 3>;
 template class RwTorqueAllocator<4>;
+template class Saturation<7>;
+template class VscmgSteering<4, 3>;
 template class MrpPd<4>;
 template class MrpPd<3>;
 template class HybridAdaptive<4, 3>;
@@ -75,7 +79,15 @@ extern "C" int adcs_target_smoke_attitude(const double* in, double* out) {
   const adcs::Status s2 = adcs::euler321_F(adcs::dcm_to_euler321(C), F321);
   const adcs::SinusoidalRateReference ref;
   const adcs::MrpReferenceSample r = ref.sample(in[3], sigma);
+  // The signal views (core/signals.hpp) and their conversions.
+  const adcs::AttitudeState x{sigma, back};
+  const adcs::AttitudeStateEuler123 xe = adcs::to_euler123(x);
+  const adcs::AttitudeStateQuaternion xq = adcs::to_quaternion(adcs::to_mrp(xe));
+  const adcs::AttitudeReference ar = adcs::to_attitude_reference(r);
+  adcs::EulerReferenceSample er;
+  const adcs::Status s3 = adcs::to_euler_reference(ar, er);
   out[0] = Gd.sum() + F.sum() + F321.sum() + r.sigma_ddot.sum() + adcs::so3_exp(sigma).sum() +
-           adcs::normalized_step_scale(in[4], 0.2);
-  return static_cast<int>(s) + static_cast<int>(s2);
+           adcs::normalized_step_scale(in[4], 0.2) + adcs::to_mrp(xq).sigma_BN.sum() +
+           adcs::to_mrp_reference(ar).sigma_ddot.sum() + er.angles_ddot.sum();
+  return static_cast<int>(s) + static_cast<int>(s2) + static_cast<int>(s3);
 }

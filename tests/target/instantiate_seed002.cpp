@@ -23,12 +23,13 @@ extern "C" int adcs_target_smoke_seed002(const double* in, double* out) {
   const adcs::PpcNeuralParams pp{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
   adcs::PpcNeural ppc(pp);
   adcs::AdaptiveTracking atc(adcs::AdaptiveTrackingParams{pp.gains});
-  adcs::EulerTrackingMeasurement m;
-  m.angles = sigma * 1e-3;
+  adcs::EulerTrackingInput m;
+  m.state.theta_BN_rad = sigma * 1e-3;
   const adcs::SinusoidalEulerReference eref;
-  adcs::EulerTrackingCommand cmd;
-  const adcs::Status s3 = ppc.step(m, eref.sample(in[3]), cmd);
-  const adcs::Status s4 = atc.step(m, eref.sample(in[3]), cmd);
-  out[1] = cmd.torque_B.sum();
+  m.reference = eref.sample(in[3]);
+  adcs::BodyTorque cmd;
+  const adcs::Status s3 = ppc.step(m, cmd);
+  const adcs::Status s4 = atc.step(m, cmd);
+  out[1] = cmd.torque_B_Nm.sum();
   return static_cast<int>(s3) + static_cast<int>(s4);
 }

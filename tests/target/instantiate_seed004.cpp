@@ -23,13 +23,24 @@ extern "C" int adcs_target_smoke_seed004(const double* in, double* out) {
   ep.B_d = dfd.B_d;
   ep.B_e = dfd.B_e;
   ep.C_d = dfd.C_d;
+  ep.period_s = adcs::DragFreeParams{}.period_s;
   adcs::DragFreeEskf alg1(ep);
   adcs::SaturatedEsf alg2(adcs::SaturatedEsfParams{});
   adcs::DragFreeAdrc adrc(adcs::DragFreeAdrcParams{});
-  adcs::Vec<9> u9 = adcs::Vec<9>::Zero();
-  const adcs::Status s6 = adcs::worst(alg1.predict(u9), alg1.update(adcs::Vec<9>::Constant(in[5])));
-  const adcs::Status s7 = adcs::worst(alg2.update(in[6], 0.0), adcs::fuse_axis(alg1, alg2, 0));
-  const adcs::Status s8 = adrc.step(alg1.state(), adcs::Vec3::Zero(), adcs::Vec3::Zero(), u9);
-  out[2] = u9.sum() + adcs::upper_truncated_std_normal(in[7]).mean + adcs::fal(in[8], 0.5, 0.01);
-  return static_cast<int>(s5) + static_cast<int>(s6) + static_cast<int>(s7) + static_cast<int>(s8);
+  adcs::DragFreeEskf::Input e1_in;  // u = 0, Δf̄ = 0
+  e1_in.y.setConstant(in[5]);
+  adcs::DragFreeEskf::Output e1_out;
+  const adcs::Status s6 = alg1.step(e1_in, e1_out);
+  adcs::SaturatedEsf::Output e2_out;
+  const adcs::Status s7 =
+      adcs::worst(alg2.step(adcs::SaturatedEsfInput{0.0, 0.0, in[6], 0.0}, e2_out), adcs::fuse_axis(alg1, alg2, 0));
+  adcs::DragFreeActuation act;
+  const adcs::Status s8 = adrc.step(adcs::DragFreeAdrcInput{alg1.state(), adcs::Vec3::Zero(), adcs::Vec3::Zero()}, act);
+  adcs::Pid<3> pid(adcs::PidParams<3>{});
+  adcs::PidOutput<3> pid_out;
+  const adcs::Status s9 = pid.step(adcs::PidInput<3>{act.F_Csc_N, act.T_Csc_Nm}, pid_out);
+  out[2] = act.stacked().sum() + pid_out.u.sum() + adcs::upper_truncated_std_normal(in[7]).mean +
+           adcs::fal(in[8], 0.5, 0.01);
+  return static_cast<int>(s5) + static_cast<int>(s6) + static_cast<int>(s7) + static_cast<int>(s8) +
+         static_cast<int>(s9);
 }

@@ -34,6 +34,7 @@
 #include "sim/random.hpp"
 #include "sim/rk4_integrator.hpp"
 #include "sim/sampled_data.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace {
 
@@ -185,7 +186,7 @@ Rows record_dragfree(int steps) {
   const replay::Api& sys = replay::kDragFree;
   if (sys.init_status() != Status::ok || sys.parts != 2) fail("drag-free filters/controller rejected");
   DragFreeParams d;  // Table 2 defaults, as the System's
-  d.h = sys.period_s;
+  d.period_s = sys.period_s;
   DragFreeDiscrete model;
   if (drag_free_discretize(d, model) != Status::ok) fail("drag-free discretisation");
   const DragFreeNoise noise = drag_free_noise(d);
@@ -210,7 +211,7 @@ Rows record_dragfree(int steps) {
   put_f(X, 0.0);
   Rows rows;
   for (int k = 0; k < steps; ++k) {
-    const double t = k * d.h;
+    const double t = k * d.period_s;
     Row row(static_cast<std::size_t>(sys.input_width), 0.0);  // Y, y_c, φ_cmd = 0 (before t_on = 1e4 s)
     const Vec<9> Y = model.C_d * X;
     for (int i = 0; i < 9; ++i) row[i] = Y(i) + noise.sigma_pos * rd[i].normal();
@@ -229,7 +230,7 @@ Rows record_dragfree(int steps) {
     sys.step_part(1, row.data());  // Algorithm 2 updates with y_c, fusion
     check_statuses(sys);
     X = (model.A_d * X + model.B_d * (u + w)).eval();
-    put_f(X, t + d.h);
+    put_f(X, t + d.period_s);
     if (!all_finite(X)) fail("drag-free truth diverged");
     rows.push_back(row);
   }

@@ -66,13 +66,13 @@ class DragFreeSystem {
   };
   static Built build() noexcept {
     Built b;
-    b.plant.h = kPeriod;
+    b.plant.period_s = kPeriod;
     const adcs::DragFreeParams& d = b.plant;
     adcs::DragFreeDiscrete model;
     b.status = adcs::drag_free_discretize(d, model);
     const adcs::DragFreeNoise n = adcs::drag_free_noise(d);
     // q = (max|ḟ| h)² from the Table 2 disturbance (amplitude 7.7 mN, ω_d 1.2e-3 rad/s), spec §B.8
-    const double qv = std::pow(7.7e-3 * 1.2e-3 * d.h, 2);
+    const double qv = std::pow(7.7e-3 * 1.2e-3 * d.period_s, 2);
     b.e1.A_d = model.A_d;
     b.e1.B_d = model.B_d;
     b.e1.B_e = model.B_e;
@@ -83,6 +83,7 @@ class DragFreeSystem {
         adcs::Vec3::Constant(n.sigma_T_tm * n.sigma_T_tm);
     b.e1.S = s.asDiagonal();
     b.e1.R = (n.sigma_pos * n.sigma_pos) * adcs::Mat<9, 9>::Identity();
+    b.e1.period_s = d.period_s;  // h of the discretisation
     for (int j = 0; j < 3; ++j) {
       adcs::DragFreeAxisModel m;
       const adcs::Status sj = adcs::drag_free_axis_model(d, j, m);
@@ -98,6 +99,7 @@ class DragFreeSystem {
       e.R_a = n.sigma_acc * n.sigma_acc;
       e.y_min = d.accel_min;
       e.y_max = d.accel_max;
+      e.period_s = d.period_s;
     }
     b.adrc.plant = d;  // gains, limit 0.03, scaled-sum integral: the DragFreeAdrcParams defaults
     return b;
@@ -172,8 +174,12 @@ class DragFreeSystem {
   void eskf_update(const double* row) noexcept { st_update_ = alg1_.update(adcs::Vec<9>::Map(row)); }
   //! Stage 3 (step 3): ADRC with φ_cmd = row[12..14].
   void adrc_step(const double* row) noexcept {
-    const adcs::Vec3 F_hat(alg2_[0].state()(2), alg2_[1].state()(2), alg2_[2].state()(2));
-    st_adrc_ = adrc_.step(alg1_.state(), F_hat, adcs::Vec3::Map(row + 12), u_);
+    const adcs::DragFreeAdrcInput in{alg1_.state(),
+                                     adcs::Vec3(alg2_[0].state()(2), alg2_[1].state()(2), alg2_[2].state()(2)),
+                                     adcs::Vec3::Map(row + 12)};
+    adcs::DragFreeActuation act;
+    st_adrc_ = adrc_.step(in, act);
+    u_ = act.stacked();  // [T_Csc; F_Csc; T_Ctm]
   }
   //! Stage 4 (steps 4-5): Algorithm 2 updates with y_c = row[9..11], fusion.
   void esf_update_fuse(const double* row) noexcept {

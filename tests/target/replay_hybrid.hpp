@@ -39,7 +39,7 @@ class HybridSystem {
   static Controller::Params params() noexcept {
     Controller::Params p;
     p.nominal = adcs::pyramid_4cmg_3rw_nominal();  // spec A.5 A-REF; the remaining fields are seed 001 §4
-    p.control_period_s = kPeriod;
+    p.period_s = kPeriod;
     return p;
   }
 
@@ -47,27 +47,29 @@ class HybridSystem {
   adcs::Status init_status() const noexcept { return ctrl_.status(); }
 
   void step(const double* row) noexcept {
-    Controller::Measurement m;
-    Controller::Reference r;  // ω_f, ω̇_f are not read by the law
-    m.sigma_BN = adcs::Vec3::Map(row);
-    m.omega_BN_B = adcs::Vec3::Map(row + 3);
-    m.gamma = adcs::Vec<4>::Map(row + 6);
-    m.Omega_w = adcs::Vec3::Map(row + 10);
-    r.sigma = adcs::Vec3::Map(row + 13);
-    r.sigma_dot = adcs::Vec3::Map(row + 16);
-    r.sigma_ddot = adcs::Vec3::Map(row + 19);
-    status_ = ctrl_.step(m, r, cmd_);
+    Controller::Input in;  // reference ω_f, ω̇_f are not read by the law
+    in.state.sigma_BN = adcs::Vec3::Map(row);
+    in.state.omega_BN_B = adcs::Vec3::Map(row + 3);
+    in.actuators.gamma_rad = adcs::Vec<4>::Map(row + 6);
+    in.actuators.Omega_rad_s = adcs::Vec3::Map(row + 10);
+    in.reference.sigma = adcs::Vec3::Map(row + 13);
+    in.reference.sigma_dot = adcs::Vec3::Map(row + 16);
+    in.reference.sigma_ddot = adcs::Vec3::Map(row + 19);
+    status_ = ctrl_.step(in, cmd_);
   }
 
   void step_part(int, const double* row) noexcept { step(row); }
+  //! u = [γ̇ (4); Ω̇_w (3)].
   void command(double* u) const noexcept {
-    for (int i = 0; i < 7; ++i) u[i] = cmd_.u(i);
+    for (int i = 0; i < 4; ++i) u[i] = cmd_.gamma_dot_rad_s(i);
+    for (int j = 0; j < 3; ++j) u[4 + j] = cmd_.Omega_dot_rad_s2(j);
   }
 
   void outputs(double* v) const noexcept {
     *v++ = static_cast<double>(status_);
     *v++ = static_cast<double>(ctrl_.safeguard_count());
-    for (int i = 0; i < 7; ++i) *v++ = cmd_.u(i);
+    for (int i = 0; i < 4; ++i) *v++ = cmd_.gamma_dot_rad_s(i);
+    for (int j = 0; j < 3; ++j) *v++ = cmd_.Omega_dot_rad_s2(j);
     for (int i = 0; i < 3; ++i) *v++ = ctrl_.theta_F()(i);
     for (int i = 0; i < 4; ++i)
       for (int k = 0; k < 6; ++k) *v++ = ctrl_.theta_cG(i)(k);
@@ -77,7 +79,7 @@ class HybridSystem {
 
  private:
   Controller ctrl_;
-  Controller::Command cmd_{};
+  Controller::Output cmd_{};  // γ̇, Ω̇_w
   adcs::Status status_ = adcs::Status::ok;
 };
 

@@ -5,6 +5,7 @@
 // PpcNeural::step() with the reference sample as input (BM_FlexiblePPC_Step also samples the
 // reference; here it is recorded so that its sin/cos are not part of the step).
 #include "adcs/control/ppc_neural.hpp"
+#include "adcs/plant/flexible_configurations.hpp"  // seed002_tracking_gains()
 #include "replay_system.hpp"
 
 namespace replay {
@@ -33,7 +34,7 @@ class PpcSystem {
 
   static Controller::Params params() noexcept {
     Controller::Params p{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
-    p.gains.control_period_s = kPeriod;
+    p.gains.period_s = kPeriod;
     return p;
   }
 
@@ -41,26 +42,25 @@ class PpcSystem {
   adcs::Status init_status() const noexcept { return ctrl_.status(); }
 
   void step(const double* row) noexcept {
-    Controller::Measurement m;
-    Controller::Reference r;
-    m.t = row[0];
-    m.angles = adcs::Vec3::Map(row + 1);
-    m.omega_BN_B = adcs::Vec3::Map(row + 4);
-    r.angles = adcs::Vec3::Map(row + 7);
-    r.angles_dot = adcs::Vec3::Map(row + 10);
-    r.angles_ddot = adcs::Vec3::Map(row + 13);
-    status_ = ctrl_.step(m, r, cmd_);
+    Controller::Input in;
+    in.t_s = row[0];
+    in.state.theta_BN_rad = adcs::Vec3::Map(row + 1);
+    in.state.omega_BN_B = adcs::Vec3::Map(row + 4);
+    in.reference.angles = adcs::Vec3::Map(row + 7);
+    in.reference.angles_dot = adcs::Vec3::Map(row + 10);
+    in.reference.angles_ddot = adcs::Vec3::Map(row + 13);
+    status_ = ctrl_.step(in, cmd_);
   }
 
   void step_part(int, const double* row) noexcept { step(row); }
   void command(double* u) const noexcept {
-    for (int i = 0; i < 3; ++i) u[i] = cmd_.torque_B(i);
+    for (int i = 0; i < 3; ++i) u[i] = cmd_.torque_B_Nm(i);
   }
 
   void outputs(double* v) const noexcept {
     *v++ = static_cast<double>(status_);
     for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(static_cast<int>(ctrl_.branch(i)));
-    for (int i = 0; i < 3; ++i) *v++ = cmd_.torque_B(i);
+    for (int i = 0; i < 3; ++i) *v++ = cmd_.torque_B_Nm(i);
     *v++ = ctrl_.mu();
     const adcs::Mat<7, 3>& W = ctrl_.weights();
     for (int j = 0; j < 3; ++j)
@@ -69,7 +69,7 @@ class PpcSystem {
 
  private:
   Controller ctrl_;
-  Controller::Command cmd_{};
+  Controller::Output cmd_{};
   adcs::Status status_ = adcs::Status::ok;
 };
 

@@ -10,6 +10,7 @@
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
 #include "replay_system.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace replay {
 
@@ -43,15 +44,17 @@ class Se3System {
     return sp;
   }
   static adcs::PrescribedTimeSe3Params params(const adcs::Se3ScenarioParams& sp) noexcept {
-    adcs::PrescribedTimeSe3Params p;  // spec A.8 Table 1; ζ = 1.05 ϖ of seed003_quantizer_params()
-    p.h = sp.control_period;
+    adcs::PrescribedTimeSe3Params p;  // spec A.8 Table 1
+    p.period_s = sp.control_period;
+    p.zeta = adcs::quantization_compensation_gain(adcs::seed003_quantizer_params());  // ζ = 1.05 ϖ
+    p.nominal = adcs::se3_chaser_nominal_params(sp);  // the controller's model of the chaser
     return p;
   }
 
   Se3System() noexcept
       : sp_(scenario_params()),
         target_model_(adcs::se3_target_params(sp_)),
-        law_(params(sp_), adcs::se3_chaser_nominal_params(sp_)),
+        law_(params(sp_)),
         quantizer_(adcs::seed003_quantizer_params()),
         limit_(adcs::se3_actuator_limits(sp_)) {}
 
@@ -62,12 +65,15 @@ class Se3System {
   }
 
   void step(const double* row) noexcept { step_stages(kCostStages, row); }
-  //! The first n stages of step() (cost mode). The desired state is a member, not a local, so
-  //! that the first stage alone is not dead code.
+  //! The first n stages of step() (cost mode). The law's input (with the desired state) is a
+  //! member, not a local, so that the first stage alone is not dead code.
   void step_stages(int n, const double* row) noexcept {
-    status_desired_ = adcs::se3_desired_state(target_model_, get(row + 18), sp_, desired_);
+    status_desired_ = adcs::se3_desired_state(target_model_, get(row + 18), sp_, in_.desired);
     if (n < 2 || status_desired_ != adcs::Status::ok) return;  // not ok: command held (ZOH of the last one)
-    status_law_ = law_.step(get(row), desired_, u_);
+    in_.state = get(row);
+    adcs::Wrench w;
+    status_law_ = law_.step(in_, w);
+    u_ = w.stacked();  // [M; F]
     if (n < 3) return;
     status_quant_ = adcs::saturate_then_quantize<6>(u_, limit_, quantizer_, u_c_);
   }
@@ -103,7 +109,7 @@ class Se3System {
   Controller law_;
   adcs::CompositeQuantizer<6> quantizer_;
   adcs::Vec6 limit_;
-  adcs::Se3DesiredState desired_{};  //!< of the last tick
+  adcs::Se3TrackingInput in_{};  //!< the chaser and desired states of the last tick
   adcs::Vec6 u_ = adcs::Vec6::Zero(), u_c_ = adcs::Vec6::Zero();
   adcs::Status status_desired_ = adcs::Status::ok, status_law_ = adcs::Status::ok,
                status_quant_ = adcs::Status::ok;

@@ -25,6 +25,7 @@
 #include <cstdint>
 
 #include "adcs/actuator/saturation.hpp"
+#include "adcs/core/component.hpp"
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
@@ -56,7 +57,7 @@ inline double quantizer_level(const QuantizerChannelParams& p, int j) noexcept {
 }
 
 //! Quantization-error bound ϖ = max{σ, δ u_s + u_min} (seed 003 [P], spec §A.3). The compensation
-//! amplitude of the controller must satisfy ζ ≥ ϖ (spec §A.5).
+//! amplitude of the controller must satisfy ζ ≥ ϖ (spec §A.5).   seed 003 eq. (16)
 inline double quantizer_error_bound(const QuantizerChannelParams& p) noexcept {
   return std::max(p.sigma, quantizer_delta(p) * p.u_s + p.u_min);
 }
@@ -122,7 +123,7 @@ class QuantizerChannel {
   double lower_boundary(int j) const noexcept { return level(j) / one_plus_delta_; }
 
   //! Q_log(u) for |u| ≤ u_s (above u_s it stays on the top level u_n; the composite switches
-  //! to Q_uni there). Exactly odd: works on |u| and restores the sign.
+  //! to Q_uni there). Exactly odd: works on |u| and restores the sign.   seed 003 eq. (13)
   double quantize_log(double u) const noexcept {
     if (n_ == 0 || std::isnan(u)) return u;
     const double a = std::fabs(u);
@@ -137,7 +138,7 @@ class QuantizerChannel {
   }
 
   //! Q_uni(u) = σ floor(u/σ + 1e-12) (spec §A.3 [A]); the 1e-12 keeps exact multiples of σ on
-  //! their own level. Error ∈ (−σ, 1e-12σ].
+  //! their own level. Error ∈ (−σ, 1e-12σ].   seed 003 eq. (14)
   double quantize_uniform(double u) const noexcept {
     if (n_ == 0) return u;
     const double x = u / p_.sigma;
@@ -152,7 +153,7 @@ class QuantizerChannel {
     return q;
   }
 
-  //! Q_i(u) (spec §A.3): log for |u| ≤ u_s, uniform above.
+  //! Q_i(u) (spec §A.3): log for |u| ≤ u_s, uniform above.   seed 003 eq. (12)
   double quantize(double u) const noexcept {
     return std::fabs(u) <= p_.u_s ? quantize_log(u) : quantize_uniform(u);
   }
@@ -170,26 +171,12 @@ class QuantizerChannel {
 };
 
 //! Parameters of an M-channel quantizer, channel i in the unit of input i. Default: every
-//! channel the seed 003 torque row (QuantizerChannelParams); seed003_quantizer_params() gives the
-//! paper's torque and force channels.
+//! channel the seed 003 torque row (QuantizerChannelParams); seed003_quantizer_params()
+//! (src/scenarios/seed003_data.hpp) gives the paper's torque and force channels.
 template <int M>
 struct CompositeQuantizerParams {
   std::array<QuantizerChannelParams, M> channel{};
 };
-
-//! Seed 003 channels (3 torques [N m], then 3 forces [N]), spec §A.8 "Proposed Table 1" [A]:
-//! torque ρ 0.3, u_min 1e-3, u_s 0.2, σ 0.1; force ρ 0.5, u_min 1e-3, u_s 2, σ 1.0. With the
-//! actuator limits 0.5 N m / 5 N [P] the limits are exact uniform levels (5σ).
-inline CompositeQuantizerParams<6> seed003_quantizer_params() noexcept {
-  CompositeQuantizerParams<6> p;
-  const QuantizerChannelParams torque{0.3, 1e-3, 0.2, 0.1};
-  const QuantizerChannelParams force{0.5, 1e-3, 2.0, 1.0};
-  for (int i = 0; i < 3; ++i) {
-    p.channel[i] = torque;
-    p.channel[i + 3] = force;
-  }
-  return p;
-}
 
 //! M channels quantized independently, with the transmission count of spec §A.3. A
 //! transmission is a change of a channel's quantized value from the previous apply(); the first
@@ -285,5 +272,60 @@ template <int M>
   u_c = w;
   return clipped > 0 ? Status::saturated : Status::ok;
 }
+
+template <int M>
+struct SaturatedQuantizerParams {
+  CompositeQuantizerParams<M> quantizer{};      //!< the channels' levels
+  Vec<M> limit = Vec<M>::Constant(kUnset);      //!< [channel units] actuator limits, > 0 (+inf: none); no default
+};
+
+struct SaturatedQuantizerDiagnostics {
+  std::uint32_t tx_mask = 0;  //!< bit i: channel i transmitted this tick
+};
+
+//! saturate_then_quantize as a component: u → sat → Q → clip, with its transmission counters.
+template <int M>
+class SaturatedQuantizer {
+ public:
+  using Params = SaturatedQuantizerParams<M>;
+  using Input = Vec<M>;
+  using Output = Vec<M>;
+  using Diagnostics = SaturatedQuantizerDiagnostics;
+
+  explicit SaturatedQuantizer(const Params& p) noexcept : p_(p), q_(p.quantizer) {
+    const bool ok = q_.status() == Status::ok && !p_.limit.hasNaN() && (p_.limit.array() > 0.0).all();
+    status_ = ok ? Status::ok : Status::invalid_parameter;
+    reset();
+  }
+  //! ok, or invalid_parameter: a channel refused (QuantizerChannel) or a limit NaN or not > 0.
+  Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return 0.0; }  //!< runs whenever its law runs (core/component.hpp)
+  void reset() noexcept { q_.reset(); }
+  const CompositeQuantizer<M>& quantizer() const noexcept { return q_; }
+
+  //! ok or saturated (sat clipped a channel); non_finite_input / invalid_parameter: out = 0 (the
+  //! actuators idle), counters untouched.
+  [[nodiscard]] Status step(const Input& u, Output& out, Diagnostics* diag = nullptr) noexcept {
+    if (status_ != Status::ok) {
+      out.setZero();
+      return status_;
+    }
+    std::uint32_t mask = 0;
+    const Status s = saturate_then_quantize<M>(u, p_.limit, q_, out, &mask);
+    if (!usable(s)) {
+      out.setZero();
+      return s;
+    }
+    if (diag) diag->tx_mask = mask;
+    return s;
+  }
+
+ private:
+  Params p_;
+  CompositeQuantizer<M> q_;
+  Status status_ = Status::ok;
+};
+
+ADCS_ASSERT_COMPONENT(SaturatedQuantizer<6>);
 
 }  // namespace adcs

@@ -2,7 +2,10 @@
 // Per-actuator magnitude limits |u_k| <= limit_k, applied element by element as a physical
 // actuator does (each gimbal motor or wheel saturates on its own; the direction of u is not
 // preserved — use the allocator's common scaling where direction matters, rw_allocation.hpp).
+#include "adcs/core/component.hpp"
+#include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/validation.hpp"
 
 namespace adcs {
 
@@ -25,5 +28,51 @@ int saturate_each(Vec<L>& u, const Vec<L>& limit) noexcept {
   }
   return clipped;
 }
+
+template <int L>
+struct SaturationParams {
+  Vec<L> limit = Vec<L>::Constant(kUnset);  //!< [channel units] |u_k| ≤ limit_k; > 0, +inf: none; no default
+};
+
+struct SaturationDiagnostics {
+  int clipped = 0;  //!< channels clipped this step
+};
+
+//! saturate_each as a component (an actuator's magnitude limits in front of a plant): Input and
+//! Output are the L-channel command.
+template <int L>
+class Saturation {
+ public:
+  using Params = SaturationParams<L>;
+  using Input = Vec<L>;
+  using Output = Vec<L>;
+  using Diagnostics = SaturationDiagnostics;
+
+  explicit Saturation(const Params& p) noexcept
+      : p_(p), status_(!p.limit.hasNaN() && (p.limit.array() > 0.0).all() ? Status::ok : Status::invalid_parameter) {}
+  //! ok, or invalid_parameter: a limit NaN (unset) or not > 0 (+inf is allowed: no limit).
+  Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return 0.0; }  //!< memoryless (core/component.hpp)
+  void reset() noexcept {}
+
+  //! u clamped per channel; saturated when a channel was clipped. non_finite_input or
+  //! invalid_parameter: u = 0 (the actuators idle).
+  [[nodiscard]] Status step(const Input& u, Output& out, Diagnostics* diag = nullptr) const noexcept {
+    if (status_ != Status::ok || !all_finite(u)) {
+      out.setZero();
+      return status_ != Status::ok ? status_ : Status::non_finite_input;
+    }
+    out = u;
+    const int clipped = saturate_each<L>(out, p_.limit);
+    if (diag) diag->clipped = clipped;
+    return clipped > 0 ? Status::saturated : Status::ok;
+  }
+
+ private:
+  Params p_;
+  Status status_;
+};
+
+ADCS_ASSERT_COMPONENT(Saturation<6>);
 
 }  // namespace adcs

@@ -187,7 +187,7 @@ class PrescribedPerformance {
       s.rho_dot(i) = rd;
       s.rho_ddot(i) = rdd;
       s.z(i) = z;
-      s.eps(i) = inv.eps;                                                       // step 4
+      s.eps(i) = inv.eps;                                                       // step 4, seed 002 eq. (8)
       s.r(i) = inv.eps_z / rho;
       s.r_dot(i) = inv.eps_zz * z_dot / rho - inv.eps_z * rd / (rho * rho);
       s.q(i) = e_dot(i) - e(i) * rd / rho;                                      // step 7

@@ -6,8 +6,9 @@
 //   u = B⁻¹ ( −A + ϑ̈_d − λ ė − D̂ − μ̂² s_e/(μ̂‖s_e‖ + σ) − K s_e ),  B⁻¹ = J G
 //   Ŵ̇_i = τ_wi (s_e,i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s_e‖ − γ μ̂)
 //
-// giving ṡ_e = D̄ − D̂ − μ̂² s_e/(μ̂‖s_e‖ + σ) − K s_e. Discrete-time at control_period_s like PPATC.
+// giving ṡ_e = D̄ − D̂ − μ̂² s_e/(μ̂‖s_e‖ + σ) − K s_e. Discrete-time at period_s like PPATC.
 #include "adcs/control/euler_tracking_common.hpp"
+#include "adcs/core/component.hpp"
 
 namespace adcs {
 
@@ -25,30 +26,29 @@ struct AdaptiveTrackingDiagnostics {
 class AdaptiveTracking {
  public:
   using Params = AdaptiveTrackingParams;
-  using Measurement = EulerTrackingMeasurement;
-  using Reference = EulerReferenceSample;
-  using Command = EulerTrackingCommand;
+  using Input = EulerTrackingInput;
+  using Output = BodyTorque;
   using Diagnostics = AdaptiveTrackingDiagnostics;
 
   explicit AdaptiveTracking(const Params& p) noexcept : p_(p), core_(p.gains) { reset(); }
   Status status() const noexcept { return core_.status(); }
+  double period_s() const noexcept { return core_.period_s(); }
   const Params& params() const noexcept { return p_; }
   void reset() noexcept { core_.reset(); }
 
   //! One control sample. ok; non_finite_input; singular (gimbal lock); out_of_range (a
   //! non-finite result). Except for ok, `out` is the failure command (zero torque, or the last good
   //! command under gains.on_failure = hold_last), estimates untouched.
-  [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
-                            Diagnostics* diag = nullptr) noexcept {
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
     out = core_.failure_command();
     if (core_.status() != Status::ok) return core_.status();
     EulerTrackingCore::Kinematics k;
-    const Status ks = core_.kinematics(m, r, k);
+    const Status ks = core_.kinematics(in, k);
     if (ks != Status::ok) return ks;
     const double c = core_.angle_scale();
     const Vec3& lambda = p_.gains.lambda;
     const Vec3 s = c * (lambda.cwiseProduct(k.e) + k.e_dot);
-    const Vec3 law = c * (-k.affine.A + r.angles_ddot - lambda.cwiseProduct(k.e_dot));
+    const Vec3 law = c * (-k.affine.A + in.reference.angles_ddot - lambda.cwiseProduct(k.e_dot));
     EulerTrackingCore::Compensation comp;
     const Status cs = core_.compensate_and_adapt(k, s, law, out, comp);
     if (diag) {
@@ -68,5 +68,7 @@ class AdaptiveTracking {
   Params p_;
   EulerTrackingCore core_;
 };
+
+ADCS_ASSERT_COMPONENT(AdaptiveTracking);
 
 }  // namespace adcs

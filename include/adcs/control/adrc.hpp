@@ -15,6 +15,7 @@
 
 #include "adcs/actuator/saturation.hpp"
 #include "adcs/control/pid.hpp"
+#include "adcs/core/component.hpp"
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
@@ -70,9 +71,40 @@ struct DragFreeAdrcParams {
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed sample: u = 0, or hold
 };
 
+//! What the law reads each sample (spec §B.7 execution order).
+struct DragFreeAdrcInput {
+  Vec<27> x_hat = Vec<27>::Zero();      //!< Algorithm 1's posterior (27 states, fused), DragFreeIndex order
+  Vec3 F_D_hat_N = Vec3::Zero();        //!< [N] Algorithm 2's predicted f̂ per axis
+  Vec3 phi_sc_cmd_rad = Vec3::Zero();   //!< [rad] spacecraft attitude command
+};
+
+//! The drag-free satellite's actuation: [T_Csc; F_Csc; T_Ctm], each within ±limit.
+struct DragFreeActuation {
+  Vec3 T_Csc_Nm = Vec3::Zero();  //!< [N m] spacecraft control torque
+  Vec3 F_Csc_N = Vec3::Zero();   //!< [N] spacecraft control force
+  Vec3 T_Ctm_Nm = Vec3::Zero();  //!< [N m] test-mass control torque
+  //! [T_Csc; F_Csc; T_Ctm], the plant's input order u (9).
+  Vec<9> stacked() const noexcept {
+    Vec<9> u;
+    u << T_Csc_Nm, F_Csc_N, T_Ctm_Nm;
+    return u;
+  }
+  static DragFreeActuation from_stacked(const Vec<9>& u) noexcept {
+    return DragFreeActuation{u.segment<3>(0), u.segment<3>(3), u.segment<3>(6)};
+  }
+};
+
+//! What the sample did beyond its output.
+struct DragFreeAdrcDiagnostics {
+  int clipped = 0;  //!< components clipped to ±limit this sample
+};
+
 class DragFreeAdrc {
  public:
   using Params = DragFreeAdrcParams;
+  using Input = DragFreeAdrcInput;
+  using Output = DragFreeActuation;
+  using Diagnostics = DragFreeAdrcDiagnostics;
 
   explicit DragFreeAdrc(const Params& p) noexcept : p_(p), pid_x_(pid_params(p)) {
     const bool ok = std::isfinite(p_.alpha) && p_.alpha > 0.0 && p_.alpha <= 1.0 && finite_positive(p_.delta) &&
@@ -86,6 +118,7 @@ class DragFreeAdrc {
   //! finite or < 0; the Fig. 9 PID refused (Pid: gains finite >= 0). A refused controller answers
   //! invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return p_.plant.period_s; }
   const Params& params() const noexcept { return p_; }
 
   void reset() noexcept {
@@ -100,16 +133,19 @@ class DragFreeAdrc {
   //! phi_cmd [rad]: s/c attitude command. u = [T_Csc; F_Csc; T_Ctm] clipped to ±limit.
   //! ok; saturated (some component clipped); non_finite_input / out_of_range (u = the failure
   //! command: zero, or the last command under on_failure = hold_last; integrals kept).
-  [[nodiscard]] Status step(const Vec<27>& x_hat, const Vec3& F_D_hat, const Vec3& phi_cmd, Vec<9>& u) noexcept {
-    u = failure_command(p_.on_failure, last_, Vec<9>(Vec<9>::Zero()));
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
+    out = Output::from_stacked(failure_command(p_.on_failure, last_, Vec<9>(Vec<9>::Zero())));
     if (status_ != Status::ok) return status_;
+    const Vec<27>& x_hat = in.x_hat;
+    const Vec3& F_D_hat = in.F_D_hat_N;
+    const Vec3& phi_cmd = in.phi_sc_cmd_rad;
     if (!all_finite(x_hat) || !all_finite(F_D_hat) || !all_finite(phi_cmd)) return Status::non_finite_input;
     using Ix = DragFreeIndex;
     const DragFreeParams& pl = p_.plant;
     const Vec3 phi = x_hat.segment<3>(Ix::phi_sc), phi_dot = x_hat.segment<3>(Ix::phi_sc_dot);
     const Vec3 r = x_hat.segment<3>(Ix::r), r_dot = x_hat.segment<3>(Ix::r_dot);
     const Vec3 phr = x_hat.segment<3>(Ix::phi_rel), phr_dot = x_hat.segment<3>(Ix::phi_rel_dot);
-    const double w = p_.integral == IntegralForm::scaled_sum ? pl.h : 1.0;
+    const double w = p_.integral == IntegralForm::scaled_sum ? pl.period_s : 1.0;
     const Vec3 e_p_att = phi_cmd - phi, e_p_df = -r;
     const Vec3 e_i_att = e_i_att_ + w * e_p_att, e_i_df = e_i_df_ + w * e_p_df;
     Vec3 T0, F0, Ttm0;
@@ -125,9 +161,10 @@ class DragFreeAdrc {
     cmd.segment<3>(3) = -F0 + pl.m_sc * h_idf - F_D_hat;                       // seed 004 eq. (45)
     Pid<1> pid_next = pid_x_;
     if (p_.x_law != DragFreeXLaw::nlpid) {  // Fig. 9 baselines: F_x = −(K_P e_p + K_I e_i + K_D e_d)
-      Vec<1> out;
-      if (pid_next.step(Vec<1>(e_p_df(0)), Vec<1>(-r_dot(0)), out) != Status::ok) return Status::out_of_range;
-      cmd(3) = -out(0) + (p_.x_law == DragFreeXLaw::pid_compensated ? pl.m_sc * h_idf(0) - F_D_hat(0) : 0.0);
+      PidOutput<1> pid_out;
+      if (pid_next.step(PidInput<1>{Vec<1>(e_p_df(0)), Vec<1>(-r_dot(0))}, pid_out) != Status::ok)
+        return Status::out_of_range;
+      cmd(3) = -pid_out.u(0) + (p_.x_law == DragFreeXLaw::pid_compensated ? pl.m_sc * h_idf(0) - F_D_hat(0) : 0.0);
     }
     cmd.segment<3>(6) = pl.I_tm * Ttm0 - x_hat.segment<3>(Ix::T_Dtm) - h_itm_Itm;  // seed 004 eq. (46)
     if (!all_finite(cmd)) return Status::out_of_range;
@@ -136,7 +173,8 @@ class DragFreeAdrc {
     e_i_df_ = e_i_df;
     pid_x_ = pid_next;
     last_ = cmd;
-    u = cmd;
+    out = Output::from_stacked(cmd);
+    if (diag) diag->clipped = clipped;
     return clipped > 0 ? Status::saturated : Status::ok;
   }
 
@@ -149,7 +187,7 @@ class DragFreeAdrc {
     q.kp(0) = p.pid_kp;
     q.ki(0) = p.pid_ki;
     q.kd(0) = p.pid_kd;
-    q.period_s = p.plant.h;
+    q.period_s = p.plant.period_s;
     return q;
   }
   double nlpid(const NlpidGains& g, double e_p, double e_i, double e_d) const noexcept {
@@ -163,5 +201,7 @@ class DragFreeAdrc {
   Vec<9> last_ = Vec<9>::Zero();
   Status status_ = Status::ok;
 };
+
+ADCS_ASSERT_COMPONENT(DragFreeAdrc);
 
 }  // namespace adcs

@@ -1,7 +1,7 @@
 #pragma once
 // What seed 002's two Euler-angle tracking laws share (PPATC, control/ppc_neural.hpp, and the
 // ATC comparison law, control/adaptive_tracking.hpp; spec §B.3):
-//   - measurement/command/gain types and the paper's Table 2 values,
+//   - input and gain types and the paper's Table 2 values,
 //   - the kinematic step: ϑ̇ = F ω, e, ė, and ϑ̈ = A + B u + D̄ in closed form (steps 1, 10),
 //   - the neural compensation and adaptation with the final u = B⁻¹(…) (steps 11-14).
 // Each law supplies its sliding variable s and its model part of the bracket.
@@ -11,12 +11,11 @@
 #include "adcs/adapt/ppc.hpp"
 #include "adcs/adapt/rbf_compensator.hpp"
 #include "adcs/core/failure_policy.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
-#include "adcs/plant/flexible_configurations.hpp"
-#include "adcs/plant/flexible_spacecraft.hpp"
-#include "adcs/reference/sinusoidal_euler.hpp"
+#include "adcs/math/euler_dynamics.hpp"
 
 namespace adcs {
 
@@ -72,25 +71,16 @@ struct EulerTrackingGains {
   Vec3 K = Vec3(0.5, 0.1, 0.5);              //!< [law units] K, seed 002 Table 2
   RbfCompensatorParams<6, 7, 3> compensator = seed002_compensator();  //!< τ_w, τ_μ, β, γ, σ, RBF layer
   AngleUnits units = AngleUnits::radians;    //!< spec B.4 #18
-  double control_period_s = 1.0e-4;          //!< [s] spec §B.5 (the paper's law is continuous)
+  double period_s = 1.0e-4;                  //!< [s] spec §B.5 (the paper's law is continuous)
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
 };
 
-//! The paper's gains with its true inertia (seed 002 Tables 1-2): what both laws use on §B.5.
-inline EulerTrackingGains seed002_tracking_gains() noexcept {
-  EulerTrackingGains g;
-  g.J = flexible_params_seed002().J;
-  return g;
-}
-
-struct EulerTrackingMeasurement {
-  double t = 0.0;                   //!< [s] time since the start of the manoeuvre
-  Vec3 angles = Vec3::Zero();       //!< [rad] ϑ, x-y-z Euler angles of B relative to N
-  Vec3 omega_BN_B = Vec3::Zero();   //!< [rad/s] ω
-};
-
-struct EulerTrackingCommand {
-  Vec3 torque_B = Vec3::Zero();  //!< [N m] control torque u, B components
+//! What both Euler-angle laws read: the time since the manoeuvre started (ρ(t) of the PPC law
+//! is measured from it), the attitude in its Euler view and the reference in the same view.
+struct EulerTrackingInput {
+  double t_s = 0.0;                 //!< [s] time since the start of the manoeuvre
+  AttitudeStateEuler123 state{};    //!< ϑ (x-y-z Euler angles of B relative to N), ω_BN_B
+  EulerReferenceSample reference{};  //!< ϑ_d, ϑ̇_d, ϑ̈_d
 };
 
 //! The shared arithmetic; owns the compensator, the last command and the validated constants.
@@ -111,33 +101,35 @@ class EulerTrackingCore {
     const bool ok = all_finite(g_.J) && llt.info() == Eigen::Success && all_finite(J_inv_) &&
                     all_finite(g_.lambda) && (g_.lambda.array() > 0.0).all() && all_finite(g_.K) &&
                     (g_.K.array() > 0.0).all() && comp_.status() == Status::ok &&
-                    std::isfinite(g_.control_period_s) && g_.control_period_s > 0.0;
+                    std::isfinite(g_.period_s) && g_.period_s > 0.0;
     status_ = ok ? Status::ok : Status::invalid_parameter;
   }
   Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return g_.period_s; }
   double angle_scale() const noexcept { return g_.units == AngleUnits::degrees ? kDegPerRad : 1.0; }
 
   void reset() noexcept {
     comp_.reset();
-    last_ = EulerTrackingCommand{};
+    last_ = BodyTorque{};
   }
-  const EulerTrackingCommand& last() const noexcept { return last_; }
+  const BodyTorque& last() const noexcept { return last_; }
   //! What a step outputs until it succeeds: zero torque, or the last good command (hold_last).
-  EulerTrackingCommand failure_command() const noexcept {
-    return adcs::failure_command(g_.on_failure, last_, EulerTrackingCommand{});
+  BodyTorque failure_command() const noexcept {
+    return adcs::failure_command(g_.on_failure, last_, BodyTorque{});
   }
   RbfCompensator<6, 7, 3>& compensator() noexcept { return comp_; }
   const RbfCompensator<6, 7, 3>& compensator() const noexcept { return comp_; }
 
   //! Steps 1 and 10: finite checks, ϑ̇ = F ω, e, ė, A, B⁻¹. non_finite_input or singular.
-  [[nodiscard]] Status kinematics(const EulerTrackingMeasurement& m, const EulerReferenceSample& r,
-                                  Kinematics& k) const noexcept {
-    if (!std::isfinite(m.t) || !all_finite(r.angles) || !all_finite(r.angles_dot) ||
+  [[nodiscard]] Status kinematics(const EulerTrackingInput& in, Kinematics& k) const noexcept {
+    const AttitudeStateEuler123& m = in.state;
+    const EulerReferenceSample& r = in.reference;
+    if (!std::isfinite(in.t_s) || !all_finite(r.angles) || !all_finite(r.angles_dot) ||
         !all_finite(r.angles_ddot))
       return Status::non_finite_input;
-    const Status s = euler_affine(g_.J, J_inv_, m.angles, m.omega_BN_B, k.affine);
+    const Status s = euler_affine(g_.J, J_inv_, m.theta_BN_rad, m.omega_BN_B, k.affine);
     if (s != Status::ok) return s;
-    k.e = m.angles - r.angles;
+    k.e = m.theta_BN_rad - r.angles;
     k.e_dot = k.affine.angles_dot - r.angles_dot;
     return Status::ok;
   }
@@ -146,7 +138,7 @@ class EulerTrackingCore {
   //! units, then one period of seed 002 eqs. (13)-(14). Commits the estimates and the command only if
   //! everything is finite (out_of_range otherwise, nothing changed).
   [[nodiscard]] Status compensate_and_adapt(const Kinematics& k, const Vec3& s, const Vec3& law,
-                                            EulerTrackingCommand& out, Compensation& c) noexcept {
+                                            BodyTorque& out, Compensation& c) noexcept {
     if (!all_finite(s) || !all_finite(law)) return Status::out_of_range;
     Vec<6> x;
     x << kDegPerRad * k.e, kDegPerRad * k.e_dot;  // RBF input in degrees (spec B.4 #18)
@@ -155,12 +147,12 @@ class EulerTrackingCore {
     const Vec3 u = k.affine.B_inv * (bracket / angle_scale());                     // step 13, seed 002 eq. (12)
     Mat<7, 3> W_next;
     double mu_next;
-    comp_.propose(o, s, g_.control_period_s, W_next, mu_next);                     // step 14
+    comp_.propose(o, s, g_.period_s, W_next, mu_next);                     // step 14
     c.D_hat = o.D_hat;
     c.robust = o.robust;
     if (!all_finite(u) || !all_finite(W_next) || !std::isfinite(mu_next)) return Status::out_of_range;
     comp_.commit(W_next, mu_next);
-    last_.torque_B = u;
+    last_.torque_B_Nm = u;
     out = last_;
     return Status::ok;
   }
@@ -169,7 +161,7 @@ class EulerTrackingCore {
   EulerTrackingGains g_;
   RbfCompensator<6, 7, 3> comp_;
   Mat3 J_inv_ = Mat3::Identity();
-  EulerTrackingCommand last_{};
+  BodyTorque last_{};
   Status status_ = Status::ok;
 };
 

@@ -15,8 +15,10 @@
 #include "adcs/actuator/steering.hpp"
 #include "adcs/adapt/normalized_step.hpp"
 #include "adcs/adapt/projection.hpp"
+#include "adcs/core/component.hpp"
 #include "adcs/core/failure_hook.hpp"
 #include "adcs/core/failure_policy.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
@@ -50,7 +52,7 @@ struct HybridAdaptiveParams {
   double beta_G = 0.05;                    //!< [-] projection radius² β_Gi (seed 001 §4)
   double delta_G = 0.1;                    //!< [-] projection boundary layer δ_Gi (seed 001 §4)
   Vec3 H_I_n = Vec3::Zero();               //!< [N m s] nominal inertial momentum H_I^n (§A.3)
-  double control_period_s = 1.0e-3;        //!< [s] T_c (spec §A.5: ≥ 5 ms is unstable)
+  double period_s = 1.0e-3;                //!< [s] T_c (spec §A.5: ≥ 5 ms is unstable)
   SteeringParams steering{};               //!< singularity-robust fallback threshold/damping
   //! After a failed step: zero gimbal rates and wheel accelerations (safe_command), or hold.
   FailurePolicy on_failure = FailurePolicy::safe_command;
@@ -63,16 +65,10 @@ struct HybridAdaptiveParams {
 };
 
 template <int M, int N>
-struct HybridAdaptiveMeasurement {
-  Vec3 sigma_BN = Vec3::Zero();     //!< [-] attitude MRP (not shadow-switched, spec §A.2.4)
-  Vec3 omega_BN_B = Vec3::Zero();   //!< [rad/s] body rate
-  Vec<M> gamma = Vec<M>::Zero();    //!< [rad] gimbal angles
-  Vec<N> Omega_w = Vec<N>::Zero();  //!< [rad/s] wheel speeds (not used by the law; checked)
-};
-
-template <int M, int N>
-struct HybridAdaptiveCommand {
-  Vec<M + N> u = Vec<M + N>::Zero();  //!< [rad/s (M) | rad/s² (N)] gimbal rates, wheel accels
+struct HybridAdaptiveInput {
+  AttitudeState state{};             //!< σ_BN (not shadow-switched, spec §A.2.4), ω_BN_B
+  VscmgState<M, N> actuators{};      //!< gimbal angles; wheel speeds (not used by the law; checked)
+  MrpReferenceSample reference{};    //!< σ_d, σ̇_d, σ̈_d
 };
 
 //! Optional per-step diagnostics (caller-owned; costs nothing when not requested).
@@ -90,9 +86,8 @@ class HybridAdaptive {
  public:
   static constexpr int L = M + N;
   using Params = HybridAdaptiveParams<M, N>;
-  using Measurement = HybridAdaptiveMeasurement<M, N>;
-  using Reference = MrpReferenceSample;
-  using Command = HybridAdaptiveCommand<M, N>;
+  using Input = HybridAdaptiveInput<M, N>;
+  using Output = VscmgRates<M, N>;
   using Diagnostics = HybridAdaptiveDiagnostics<M, N>;
 
   explicit HybridAdaptive(const Params& p) noexcept : p_(p) {
@@ -112,7 +107,7 @@ class HybridAdaptive {
     ok = ok && llt.info() == Eigen::Success;
     J_n_inv_ = llt.solve(Mat3::Identity());
     proj_ = ProjectionParams{p_.alpha_G, p_.beta_G, p_.delta_G};
-    ok = ok && valid(proj_) && finite_nonnegative(p_.alpha_F) && finite_positive(p_.control_period_s) &&
+    ok = ok && valid(proj_) && finite_nonnegative(p_.alpha_F) && finite_positive(p_.period_s) &&
          all_finite(p_.H_I_n) && all_finite(J_n_inv_) && finite_positive(p_.max_step_gain);
     status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles, Q_L, nominal geometry, "
                              "steering, alpha, beta, delta, period)")
@@ -128,13 +123,14 @@ class HybridAdaptive {
   //! β_G <= 0, δ_G <= 0, T_c <= 0, λ_max <= 0 or any of them or H_I_n not finite. A refused law
   //! answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return p_.period_s; }
 
   //! Estimates to their initial values Θ̂(0) = 0 (spec §A.5), counters and command to zero.
   void reset() noexcept {
     theta_F_.setZero();
     theta_c_.setZero();
     theta_w_.setZero();
-    last_.u.setZero();
+    last_ = Output{};
     safeguard_count_ = 0;
   }
 
@@ -147,8 +143,10 @@ class HybridAdaptive {
   [[nodiscard]] Status set_available(ActuatorMask mask) noexcept {
     if ((mask & ~all_actuators<L>()) != 0u) return Status::out_of_range;
     available_ = mask;
-    for (int k = 0; k < L; ++k)
-      if (((mask >> k) & 1u) == 0u) last_.u(k) = 0.0;
+    for (int k = 0; k < M; ++k)
+      if (((mask >> k) & 1u) == 0u) last_.gamma_dot_rad_s(k) = 0.0;
+    for (int k = 0; k < N; ++k)
+      if (((mask >> (M + k)) & 1u) == 0u) last_.Omega_dot_rad_s2(k) = 0.0;
     return Status::ok;
   }
   ActuatorMask available() const noexcept { return available_; }
@@ -159,17 +157,17 @@ class HybridAdaptive {
   //! non_finite_input / singular / out_of_range / invalid_parameter / request_not_met (the
   //! steering cannot deliver the torque) with `out` = the failure command (zero gimbal rates and
   //! wheel accelerations, or the last good command under hold_last) and every estimate untouched.
-  [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
-                            Diagnostics* diag = nullptr) noexcept {
-    out = failure_command(p_.on_failure, last_, Command{});
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
+    out = failure_command(p_.on_failure, last_, Output{});
     if (status_ != Status::ok) return status_;
-    if (!all_finite(m.sigma_BN) || !all_finite(m.omega_BN_B) || !all_finite(m.gamma) ||
-        !all_finite(m.Omega_w) || !all_finite(r.sigma) || !all_finite(r.sigma_dot) ||
+    const MrpReferenceSample& r = in.reference;
+    if (!all_finite(in.state.sigma_BN) || !all_finite(in.state.omega_BN_B) || !all_finite(in.actuators.gamma_rad) ||
+        !all_finite(in.actuators.Omega_rad_s) || !all_finite(r.sigma) || !all_finite(r.sigma_dot) ||
         !all_finite(r.sigma_ddot))
       return Status::non_finite_input;
 
-    const Vec3& sigma = m.sigma_BN;
-    const Vec3& w = m.omega_BN_B;
+    const Vec3& sigma = in.state.sigma_BN;
+    const Vec3& w = in.state.omega_BN_B;
     // Steps 1-3: kinematics and error.
     const Mat3 G = mrp_G(sigma);
     const Vec3 sigma_dot = G * w;                                   // seed 001 eq. (6)
@@ -182,7 +180,7 @@ class HybridAdaptive {
     const Mat3 Y_F = -GJ * skew(w) * mrp_to_dcm(sigma);             // seed 001 eq. (16)
     const Vec3 F_n = G_dot * w + Y_F * p_.H_I_n;                    // seed 001 eq. (15)
     // Steps 6-8: X = G*n + Y_G Θ̂_G column by column (seed 001 eqs. (17)-(20)).
-    const Vec<M> cos_g = m.gamma.array().cos(), sin_g = m.gamma.array().sin();  // once per step
+    const Vec<M> cos_g = in.actuators.gamma_rad.array().cos(), sin_g = in.actuators.gamma_rad.array().sin();  // once per step
     Mat<3, L> X;
     for (int i = 0; i < M; ++i) {
       const double c = cos_g(i), s = sin_g(i);
@@ -209,7 +207,7 @@ class HybridAdaptive {
     // Steps 11-13: adaptation over T_c (explicit Euler, or its normalized step); commit only
     // if everything is finite. Per-step loop gains λ = T α ‖Y‖² ‖P22‖ (adapt/normalized_step.hpp):
     // ‖Y_F‖², and ‖Y_Gk u_k‖² = (h_cw,i or I_ws,j)² ‖GJ‖² u_k² since [c I3, −s I3] is orthonormal.
-    const double T = p_.control_period_s;
+    const double T = p_.period_s;
     double scale_F = 1.0;
     Vec<L> scale_u = Vec<L>::Ones();  // per-block scale of the Θ_G steps
     if (p_.adaptation_step == AdaptationStep::normalized) {
@@ -257,7 +255,7 @@ class HybridAdaptive {
       diag->projection_active_blocks = active_blocks;
       diag->theta_F_step_scale = scale_F;
     }
-    last_.u = u;
+    last_ = Output::from_stacked(u);
     out = last_;  // step 14: the caller holds u over the period (ZOH)
     if (safeguard) return Status::constraint_violated;
     return steer_status;
@@ -298,7 +296,7 @@ class HybridAdaptive {
     Vec<K> rate;
     bool active = false;
     if (smooth_projection<K>(theta, Phi, proj_, rate, &active) != Status::ok) return false;
-    next = theta + p_.control_period_s * rate;
+    next = theta + p_.period_s * rate;
     safeguard = radial_safeguard<K>(next, p_.beta_G + p_.delta_G) || safeguard;
     active_blocks += active;
     return true;
@@ -317,9 +315,11 @@ class HybridAdaptive {
   Vec3 theta_F_ = Vec3::Zero();
   Mat<6, M> theta_c_ = Mat<6, M>::Zero();
   Mat<3, N> theta_w_ = Mat<3, N>::Zero();
-  Command last_{};
+  Output last_{};
   std::uint32_t safeguard_count_ = 0;
   ActuatorMask available_ = all_actuators<L>();
 };
+
+ADCS_ASSERT_COMPONENT(HybridAdaptive<4, 3>);
 
 }  // namespace adcs

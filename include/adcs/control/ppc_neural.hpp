@@ -8,7 +8,7 @@
 //   Ŵ̇_i = τ_wi (s_i h − β Ŵ_i),  μ̂̇ = τ_μ (‖s‖ − γ μ̂),  h = h((180/π)[e; ė])      seed 002 eqs. (13)-(14)
 //
 // giving ṡ = R (D̄ − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s). The paper's law is continuous; here it is a
-// discrete-time object at control_period_s with the estimates stepped inside step() (exact ZOH
+// discrete-time object at period_s with the estimates stepped inside step() (exact ZOH
 // steps). The s-loop rate R K reaches ~1.1e4 s⁻¹ as ρ → ρ∞ (spec §B.3 step 15), so the period
 // must be ~1e-4 s in the paper's unit convention; the scenario's sample-rate study measures it.
 //
@@ -18,9 +18,10 @@
 #include "adcs/adapt/ppc.hpp"
 #include "adcs/adapt/rbf_compensator.hpp"
 #include "adcs/control/euler_tracking_common.hpp"
+#include "adcs/core/component.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
-#include "adcs/plant/flexible_spacecraft.hpp"
 
 namespace adcs {
 
@@ -43,9 +44,8 @@ struct PpcNeuralDiagnostics {
 class PpcNeural {
  public:
   using Params = PpcNeuralParams;
-  using Measurement = EulerTrackingMeasurement;
-  using Reference = EulerReferenceSample;
-  using Command = EulerTrackingCommand;
+  using Input = EulerTrackingInput;
+  using Output = BodyTorque;
   using Diagnostics = PpcNeuralDiagnostics;
 
   explicit PpcNeural(const Params& p) noexcept
@@ -55,6 +55,7 @@ class PpcNeural {
   }
 
   Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return core_.period_s(); }
   const Params& params() const noexcept { return p_; }
 
   //! Estimates to Ŵ = 0, μ̂ = 0, no recoveries; the funnel is fixed again by the next step's e.
@@ -64,7 +65,7 @@ class PpcNeural {
     recoveries_ = 0;
   }
 
-  //! One control sample at m.t [s] since the start of the manoeuvre (ρ(t) is measured from it).
+  //! One control sample at in.t_s [s] since the start of the manoeuvre (ρ(t) is measured from it).
   //! ok; constraint_violated (usable, the law's command: robust mode clamped an error at its
   //! funnel edge, or the funnel was re-opened — see below); out_of_range (funnel violated with
   //! ppc.recovery = none, or an overflow); non_finite_input; singular (|θ| at gimbal lock). Except
@@ -75,20 +76,19 @@ class PpcNeural {
   //! funnel — or starts outside it — the violated channels' funnels are re-opened from the current
   //! error (PrescribedPerformance::reopen), the law runs on them, the step returns
   //! constraint_violated and funnel_recoveries() counts it. The adaptive estimates carry on.
-  [[nodiscard]] Status step(const Measurement& m, const Reference& r, Command& out,
-                            Diagnostics* diag = nullptr) noexcept {
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
     out = core_.failure_command();
     if (diag) diag->funnel_reopened = false;
     if (status_ != Status::ok) return status_;
     EulerTrackingCore::Kinematics k;
-    const Status ks = core_.kinematics(m, r, k);
+    const Status ks = core_.kinematics(in, k);
     if (ks != Status::ok) return ks;
     const double c = core_.angle_scale();
     const Vec3 e = c * k.e, e_dot = c * k.e_dot;  // law units
     const bool recover = p_.ppc.recovery == FunnelRecovery::reopen;
     Status s = Status::ok;
     if (started_) {
-      s = apply(ppc_, m, r, k, e, e_dot, out, diag);
+      s = apply(ppc_, in, k, e, e_dot, out, diag);
       if (s != Status::out_of_range || !recover) return s;
     }
     // First step, or a violation to recover from: change a copy of the funnel (the branches fixed
@@ -98,11 +98,11 @@ class PpcNeural {
     if (!started_) {
       const Status init = funnel.init(e);
       if (init != Status::ok && !(init == Status::out_of_range && recover)) return init;
-      s = apply(funnel, m, r, k, e, e_dot, out, diag);
+      s = apply(funnel, in, k, e, e_dot, out, diag);
     }  // else: the funnel in force already gave out_of_range above; no need to run it again
     int reopened = 0;
-    if (s == Status::out_of_range && recover && funnel.reopen(m.t, e, reopened) == Status::ok && reopened > 0)
-      s = apply(funnel, m, r, k, e, e_dot, out, diag);
+    if (s == Status::out_of_range && recover && funnel.reopen(in.t_s, e, reopened) == Status::ok && reopened > 0)
+      s = apply(funnel, in, k, e, e_dot, out, diag);
     if (!usable(s)) return s;
     ppc_ = funnel;
     started_ = true;
@@ -127,17 +127,16 @@ class PpcNeural {
  private:
   //! Steps 2-14 with the funnel `ppc` (branches fixed); commits the estimates and the command
   //! only when it returns ok or constraint_violated.
-  Status apply(const PrescribedPerformance<3>& ppc, const Measurement& m, const Reference& r,
-               const EulerTrackingCore::Kinematics& k, const Vec3& e, const Vec3& e_dot, Command& out,
-               Diagnostics* diag) noexcept {
+  Status apply(const PrescribedPerformance<3>& ppc, const Input& in, const EulerTrackingCore::Kinematics& k,
+               const Vec3& e, const Vec3& e_dot, Output& out, Diagnostics* diag) noexcept {
     const double c = core_.angle_scale();
     PpcSample<3> ps;
-    const Status ts = ppc.transform(m.t, e, e_dot, ps);                             // steps 2-7
+    const Status ts = ppc.transform(in.t_s, e, e_dot, ps);                             // steps 2-7
     if (!usable(ts)) return ts;
     const Vec3& lambda = p_.gains.lambda;
     const Vec3 s = lambda.cwiseProduct(ps.eps) + ps.eps_dot;                        // seed 002 eq. (10)
     const Vec3 RinvV = (lambda + ps.r_dot.cwiseQuotient(ps.r)).cwiseProduct(ps.q) + ps.q_dot_offset -
-                       c * r.angles_ddot;                                            // seed 002 eq. (11)
+                       c * in.reference.angles_ddot;                                            // seed 002 eq. (11)
     const Vec3 law = -c * k.affine.A - RinvV;                                        // seed 002 eq. (12), model part
     EulerTrackingCore::Compensation comp;
     const Status cs = core_.compensate_and_adapt(k, s, law, out, comp);             // steps 11-14
@@ -168,5 +167,7 @@ class PpcNeural {
   long recoveries_ = 0;
   Status status_ = Status::ok;
 };
+
+ADCS_ASSERT_COMPONENT(PpcNeural);
 
 }  // namespace adcs

@@ -21,7 +21,9 @@
 #include "adcs/actuator/quantizer.hpp"
 #include "adcs/control/nonsingular_power.hpp"
 #include "adcs/control/se3_tracking_error.hpp"
+#include "adcs/core/component.hpp"
 #include "adcs/core/failure_policy.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
@@ -36,7 +38,9 @@ inline Vec6 quantization_compensation_gain(const CompositeQuantizerParams<6>& q,
 }
 
 //! Gains; channels [rotation x3; translation x3]. Every default is spec §A.8 "Proposed Table 1"
-//! [A] (the paper's Table 1 was lost), quantizer-derived ζ excepted (set it from ϖ).
+//! [A] (the paper's Table 1 was lost). No default for the nominal model (the controller's
+//! knowledge of the vehicle) nor for ζ, which depends on the quantizer in front of the plant:
+//! both are NaN until set, and refused.
 struct PrescribedTimeSe3Params {
   double p = 0.5;            //!< [-] power, 0 < p < 1
   double T = 120.0;          //!< [s] prescribed time (paper: 80, 100, 120, 140)
@@ -48,14 +52,15 @@ struct PrescribedTimeSe3Params {
   Vec6 Lambda2 = Vec6::Constant(1.0);     //!< Λ'
   Vec6 Upsilon2 = Vec6::Constant(0.1);    //!< Υ'
   double eps2 = 0.01;        //!< ε2, switch of S(z2)
-  Vec6 zeta = quantization_compensation_gain(seed003_quantizer_params());  //!< ζ = 1.05 ϖ [N m | N]
+  Vec6 zeta = Vec6::Constant(kUnset);  //!< [N m | N] ζ ≥ ϖ (quantization_compensation_gain), no default
   double eps_q = 1e-3;       //!< ε_q, tanh width of u2
   double a = 0.05;           //!< robust-term scale
   double gamma = 1e-7;       //!< adaptation gain
   double sigma1 = 0.05;      //!< [1/s] leakage
   double sigma2 = 1e4;       //!< cubic leakage
   double psi_hat0 = 1e-4;    //!< ψ̂(0) (GIVEN by the paper)
-  double h = 0.125;          //!< [s] control period (8 Hz, GIVEN)
+  double period_s = 0.125;   //!< [s] h, control period (8 Hz, GIVEN)
+  Se3SpacecraftParams nominal{};  //!< J0, m0: the controller's model of the chaser (no default)
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed tick: zero wrench, or hold
 };
 
@@ -68,11 +73,14 @@ struct PrescribedTimeSe3Terms {
 class PrescribedTimeSe3 {
  public:
   using Params = PrescribedTimeSe3Params;
+  using Input = Se3TrackingInput;
+  using Output = Wrench;
+  using Diagnostics = PrescribedTimeSe3Terms;
 
-  PrescribedTimeSe3(const Params& p, const Se3SpacecraftParams& nominal) noexcept
-      : p_(p), nominal_(nominal), S1_(NonsingularPowerParams{p.p, p.eps1}), S2_(NonsingularPowerParams{p.p, p.eps2}) {
+  explicit PrescribedTimeSe3(const Params& p) noexcept
+      : p_(p), nominal_(p.nominal), S1_(NonsingularPowerParams{p.p, p.eps1}), S2_(NonsingularPowerParams{p.p, p.eps2}) {
     // p ∈ (0, 1) and ε1, ε2 are checked by S1_, S2_ (NonsingularPower).
-    const bool ok = finite_positive(p_.T) && finite_positive(p_.h) && finite_positive(p_.a) &&
+    const bool ok = finite_positive(p_.T) && finite_positive(p_.period_s) && finite_positive(p_.a) &&
                     finite_positive(p_.eps_q) && finite_nonnegative(p_.gamma) && finite_nonnegative(p_.sigma1) &&
                     finite_nonnegative(p_.sigma2) && finite_nonnegative(p_.psi_hat0) && finite_nonnegative(p_.K2) &&
                     finite_nonnegative(p_.K3) && finite_nonnegative(p_.zeta) && finite_nonnegative(p_.Lambda) &&
@@ -89,6 +97,7 @@ class PrescribedTimeSe3 {
   //! nominal model refused (Se3Spacecraft). A refused law answers invalid_parameter from every
   //! step() with its failure command.
   Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return p_.period_s; }
   const Params& params() const noexcept { return p_; }
   void reset() noexcept {
     psi_hat_ = p_.psi_hat0;
@@ -103,11 +112,11 @@ class PrescribedTimeSe3 {
   //! One control tick: u from the chaser state x and the desired state d, then ψ̂ ← ψ̂ + h ψ̂̇.
   //! On a status that is not usable u is the failure command (zero wrench, or the last good
   //! command under on_failure = hold_last) and ψ̂ is unchanged.
-  [[nodiscard]] Status step(const Se3SpacecraftState& x, const Se3DesiredState& d, Vec6& u) noexcept {
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
     Se3TrackingError e;
-    const Status se = se3_law_error(status_, x, d, nominal_, e);
+    const Status se = se3_law_error(status_, in.state, in.desired, nominal_, e);
     if (se != Status::ok) {
-      u = failure_command(p_.on_failure, u_, Vec6(Vec6::Zero()));
+      out = Wrench::from_stacked(failure_command(p_.on_failure, u_, Vec6(Vec6::Zero())));
       return se;
     }
     const double c = kPi / (p_.p * p_.T);
@@ -121,28 +130,29 @@ class PrescribedTimeSe3 {
       dalpha(i) = -p_.K2(i) - c * (p_.Lambda(i) * S1_.derivative(z) +
                                    p_.Upsilon(i) * (1.0 + p_.p) * detail::abs_pow(std::fabs(z), p_.p));
     }
-    const Vec6 z2 = e.eta_dot - alpha;  // z2 = G ξ_e − α
-    const Vec6 alpha_dot = dalpha.cwiseProduct(e.eta_dot);
+    const Vec6 z2 = e.eta_dot - alpha;  // z2 = G ξ_e − α   seed 003 eq. (29)
+    const Vec6 alpha_dot = dalpha.cwiseProduct(e.eta_dot);  // seed 003 eq. (37)
     Vec6 shaping;
     for (int i = 0; i < 6; ++i)
       shaping(i) = p_.Lambda2(i) * S2_.value(z2(i)) + p_.Upsilon2(i) * sig(z2(i), 1.0 + p_.p);
     const Vec6 v1 = -e.G_dot_xi_e - e.G.times(e.F0) + alpha_dot - p_.K3.cwiseProduct(z2) - c * shaping;
-    const Vec6 u1 = se3_apply_inertia(nominal_.params(), e.G.inverse_times(v1));
+    const Vec6 u1 = se3_apply_inertia(nominal_.params(), e.G.inverse_times(v1));  // seed 003 eq. (41)
     const Vec6 b = se3_apply_inverse_inertia(nominal_, e.G.transpose_times(z2));  // Ξ0⁻¹ Gᵀ z2
     Vec6 u2;
-    for (int i = 0; i < 6; ++i) u2(i) = -p_.zeta(i) * std::tanh(p_.zeta(i) * b(i) / p_.eps_q);
+    for (int i = 0; i < 6; ++i) u2(i) = -p_.zeta(i) * std::tanh(p_.zeta(i) * b(i) / p_.eps_q);  // seed 003 eq. (43)
     const double two_a2 = 2.0 * p_.a * p_.a;
+    // u3 = −(ψ̂/(2a²)) Ξ0 G⁻¹ z2   seed 003 eq. (46)
     const Vec6 u3 = -(psi_hat_ / two_a2) * se3_apply_inertia(nominal_.params(), e.G.inverse_times(z2));
     const Vec6 u_new = u1 + u2 + u3;  // seed 003 eq. (47)
     const double psi_dot = p_.gamma * z2.squaredNorm() / two_a2 - p_.sigma1 * psi_hat_ -
-                           p_.sigma2 * psi_hat_ * psi_hat_ * psi_hat_;
-    const double psi_new = std::fmax(0.0, psi_hat_ + p_.h * psi_dot);
+                           p_.sigma2 * psi_hat_ * psi_hat_ * psi_hat_;  // seed 003 eq. (44)
+    const double psi_new = std::fmax(0.0, psi_hat_ + p_.period_s * psi_dot);
     if (!all_finite(u_new) || !std::isfinite(psi_new)) {
-      u = failure_command(p_.on_failure, u_, Vec6(Vec6::Zero()));
+      out = Wrench::from_stacked(failure_command(p_.on_failure, u_, Vec6(Vec6::Zero())));
       return Status::out_of_range;
     }
     u_ = u_new;
-    u = u_;
+    out = Wrench::from_stacked(u_);
     psi_hat_ = psi_new;
     terms_.z1 = z1;
     terms_.z2 = z2;
@@ -150,6 +160,7 @@ class PrescribedTimeSe3 {
     terms_.u1 = u1;
     terms_.u2 = u2;
     terms_.u3 = u3;
+    if (diag) *diag = terms_;
     return Status::ok;
   }
 
@@ -164,5 +175,7 @@ class PrescribedTimeSe3 {
   Vec6 u_ = Vec6::Zero();
   PrescribedTimeSe3Terms terms_;
 };
+
+ADCS_ASSERT_COMPONENT(PrescribedTimeSe3);
 
 }  // namespace adcs

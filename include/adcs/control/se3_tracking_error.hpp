@@ -17,6 +17,12 @@
 
 namespace adcs {
 
+//! What both SE(3) laws read: the chaser's measured state and the desired state.
+struct Se3TrackingInput {
+  Se3SpacecraftState state{};   //!< chaser C_NB, R_N, ω_BN_B, v_B
+  Se3DesiredState desired{};    //!< C_ND, R_N, ω_DN_D, v_D and their rates
+};
+
 //! Filled by se3_tracking_error(). Like an Eigen matrix, a default-constructed one is
 //! uninitialised: both laws make one per control step, and zeroing its ~100 doubles first cost
 //! memset calls on the Cortex-M7 (issue 7 budget).
@@ -45,7 +51,7 @@ struct Se3TrackingError {
   g_e.C = d.C_ND.transpose() * x.C_NB;             // C_e = C_dᵀ C
   g_e.R = d.C_ND.transpose() * (x.R_N - d.R_N);    // R_e = C_dᵀ (R − R_d)
   const Vec6 xi_d_e = se3_Ad_inv_times(g_e, d.xi());  // Ad_{g_e⁻¹} ξ_d
-  const Vec6 xi_e = x.xi() - xi_d_e;               // spec §A.2.3
+  const Vec6 xi_e = x.xi() - xi_d_e;               // spec §A.2.3, seed 003 eq. (6)
   // η = log(g_e)^∨, G, G⁻¹, η̇ = G ξ_e (8) and Ġ ξ_e in one pass (shared coefficients).
   const Se3ErrorKinematics k = se3_error_kinematics(g_e, xi_e);
   const Se3SpacecraftParams& p0 = nominal.params();

@@ -9,13 +9,21 @@
 //     explicit C(const Params&) noexcept;
 //     Status status() const noexcept;        // ok, or invalid_parameter (checked at construction)
 //     void reset() noexcept;                 // back to the state after construction
-//     double period_s() const noexcept;      // [s] the sample period the component runs at
+//     double period_s() const noexcept;      // [s] the sample period the component runs at; 0 for a
+//                                            // memoryless actuation stage (allocation, saturation,
+//                                            // steering), which runs whenever the law feeding it does
 //     [[nodiscard]] Status step(const Input&, Output&, Diagnostics* = nullptr) noexcept;
 //   };
 //
 // One failure semantics for all (docs/FAILURE-POLICY.md): a step whose status is not usable()
-// writes the component's failure output (its safe command, or the last good one under
-// FailurePolicy::hold_last) and leaves its internal state untouched.
+// writes the component's failure output and leaves its internal state untouched. The failure
+// output is the safe command for a law (zero torque, wrench, rates; or the last good command
+// under FailurePolicy::hold_last), zero for an actuation stage (the actuators idle), and the
+// current estimate for an estimator (a rejected measurement leaves the prediction: the filter
+// coasts). One documented exception: a steering stage's request_not_met is written() — the
+// escape law's bounded command, which is how it leaves a singularity — and is output as such.
+// Diagnostics hold what the step computed before it stopped: after a failed step their content
+// is partial and unspecified (the status says what happened).
 //
 // Usage: ADCS_ASSERT_COMPONENT(MyLaw); right after the class, so a component that drifts from the
 // shape fails to compile with a message naming what is missing.
@@ -96,16 +104,19 @@ inline constexpr bool is_component_v =
 
 }  // namespace adcs
 
-//! Fails the build, naming the missing part, unless T has the component shape.
-#define ADCS_ASSERT_COMPONENT(T)                                                                            \
-  static_assert(::adcs::detail::has_types<T>::value,                                                        \
-                #T ": a component defines Params, Input, Output and Diagnostics");                         \
-  static_assert(::adcs::detail::constructible_from_params<T>::value,                                        \
-                #T ": a component is constructed noexcept from const Params&");                            \
-  static_assert(::adcs::detail::has_status<T>::value, #T ": Status status() const noexcept missing");       \
-  static_assert(::adcs::detail::has_reset<T>::value, #T ": void reset() noexcept missing");                 \
-  static_assert(::adcs::detail::has_period<T>::value, #T ": double period_s() const noexcept missing");     \
-  static_assert(::adcs::detail::has_step<T>::value,                                                         \
-                #T ": Status step(const Input&, Output&, Diagnostics*) noexcept missing");                 \
-  static_assert(::adcs::detail::has_step_without_diagnostics<T>::value,                                     \
-                #T ": step's Diagnostics* must default to nullptr")
+//! Fails the build, naming the missing part, unless the type has the component shape. Variadic so
+//! a template with several arguments needs no extra parentheses: ADCS_ASSERT_COMPONENT(HybridAdaptive<4, 3>).
+#define ADCS_ASSERT_COMPONENT(...)                                                                          \
+  static_assert(::adcs::detail::has_types<__VA_ARGS__>::value,                                              \
+                #__VA_ARGS__ ": a component defines Params, Input, Output and Diagnostics");               \
+  static_assert(::adcs::detail::constructible_from_params<__VA_ARGS__>::value,                              \
+                #__VA_ARGS__ ": a component is constructed noexcept from const Params&");                  \
+  static_assert(::adcs::detail::has_status<__VA_ARGS__>::value,                                             \
+                #__VA_ARGS__ ": Status status() const noexcept missing");                                  \
+  static_assert(::adcs::detail::has_reset<__VA_ARGS__>::value, #__VA_ARGS__ ": void reset() noexcept missing"); \
+  static_assert(::adcs::detail::has_period<__VA_ARGS__>::value,                                             \
+                #__VA_ARGS__ ": double period_s() const noexcept missing");                                \
+  static_assert(::adcs::detail::has_step<__VA_ARGS__>::value,                                               \
+                #__VA_ARGS__ ": Status step(const Input&, Output&, Diagnostics*) noexcept missing");       \
+  static_assert(::adcs::detail::has_step_without_diagnostics<__VA_ARGS__>::value,                           \
+                #__VA_ARGS__ ": step's Diagnostics* must default to nullptr")

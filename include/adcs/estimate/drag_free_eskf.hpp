@@ -5,6 +5,7 @@
 // translation r, ṙ, F_Dsc (9 states, output r_rel). Nothing in A_d, B_d S B_dᵀ, B_e, C_d, R or
 // P_0 = 0.01 I couples them, so this is Algorithm 1 exactly (see PartitionedEskf) at about a third
 // of the work of the 27-state matrices. Construction rejects parameters that do couple them.
+#include "adcs/core/component.hpp"
 #include "adcs/estimate/partitioned_eskf.hpp"
 #include "adcs/plant/drag_free.hpp"
 
@@ -38,5 +39,7 @@ class DragFreeEskf : public DragFreeEskfBase {
   //! fuse_axis() refuses it too.
   Status status() const noexcept { return DragFreeEskfBase::status(); }
 };
+
+ADCS_ASSERT_COMPONENT(DragFreeEskf);
 
 }  // namespace adcs

@@ -22,6 +22,7 @@
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
+#include "adcs/core/component.hpp"
 #include "adcs/core/validation.hpp"
 #include "adcs/estimate/extended_state_covariance.hpp"
 
@@ -42,12 +43,55 @@ struct EskfParams {
   Vec<N> x0 = Vec<N>::Zero();             //!< X̂_0 (spec §B.4: 0)
   Mat<N, N> P0 = 0.01 * Mat<N, N>::Identity();  //!< P_0 (spec §B.4: 0.01 I), symmetric PSD, tr > 0
   ThetaPolicy theta_policy = ThetaPolicy::trace_optimal;  //!< spec §B.4 [D]
+  double period_s = kUnset;               //!< [s] h, the period A_d and B_d were discretised at, no default
 };
+
+//! One filter sample: the input applied over the last period, the nominal disturbance increment
+//! and the measurement taken now.
+template <int NU, int NL, int NY>
+struct EskfInput {
+  Vec<NU> u = Vec<NU>::Zero();                //!< u_{k−1}, applied over the last period
+  Vec<NL> delta_f_nominal = Vec<NL>::Zero();  //!< Δf̄ (0: the nominal model f̄ = 0 of spec §B.8)
+  Vec<NY> y = Vec<NY>::Zero();                //!< Y_k
+};
+
+template <int N>
+struct EskfOutput {
+  Vec<N> x_hat = Vec<N>::Zero();  //!< X̂_k (the prediction alone when the update was rejected)
+};
+
+struct EskfDiagnostics {
+  Status predict = Status::ok;  //!< the time update's status
+  Status update = Status::ok;   //!< the measurement update's (the time update's when it failed)
+  double theta = 0.0;           //!< [-] θ_k of the time update
+};
+
+namespace detail {
+//! step() of the filters that have predict() and update(): the time update, then the measurement
+//! update; a rejected measurement leaves the prediction in place (the filter coasts, as a flight
+//! estimator does when a sensor sample is bad), a rejected time update leaves everything. The
+//! output is always the filter's current estimate, which stays finite.
+template <class Filter, class In, int N>
+Status estimator_sample(Filter& f, const In& in, EskfOutput<N>& out, EskfDiagnostics* diag) noexcept {
+  const Status sp = f.predict(in.u, in.delta_f_nominal);
+  const Status su = usable(sp) ? f.update(in.y) : sp;
+  out.x_hat = f.state();
+  if (diag) {
+    diag->predict = sp;
+    diag->update = su;
+    diag->theta = f.theta();
+  }
+  return usable(sp) ? su : sp;
+}
+}  // namespace detail
 
 template <int N, int NU, int NL, int NY>
 class Eskf {
  public:
   using Params = EskfParams<N, NU, NL, NY>;
+  using Input = EskfInput<NU, NL, NY>;
+  using Output = EskfOutput<N>;
+  using Diagnostics = EskfDiagnostics;
   using State = Vec<N>;
   using Covariance = Mat<N, N>;
 
@@ -60,7 +104,8 @@ class Eskf {
     const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C_d) &&
                     finite_nonnegative(p_.q) && symmetric_positive_semidefinite<NU>(p_.S) &&
                     symmetric_positive_definite<NY>(p_.R) && all_finite(p_.x0) &&
-                    symmetric_positive_semidefinite<N>(p_.P0) && p_.P0.trace() > 0.0;
+                    symmetric_positive_semidefinite<N>(p_.P0) && p_.P0.trace() > 0.0 &&
+                    finite_positive(p_.period_s);
     status_ = ok ? Status::ok : Status::invalid_parameter;
     theta_fixed_ = p_.P0.trace() > 0.0 ? std::sqrt(Q1_.trace() / p_.P0.trace()) : 0.0;  // θ* (literal)
     A_nz_.assign(p_.A_d);
@@ -70,10 +115,17 @@ class Eskf {
 
   //! ok, or invalid_parameter: A_d, B_d, B_e, C_d or X̂_0 not finite (unset); q not finite or
   //! < 0; S not symmetric PSD; R not symmetric positive definite (the innovation covariance must be
-  //! invertible for any P); P_0 not symmetric PSD or tr P_0 = 0 (θ* divides by it). A refused
-  //! filter answers invalid_parameter from predict() and update() with its estimate untouched.
+  //! invertible for any P); P_0 not symmetric PSD or tr P_0 = 0 (θ* divides by it); period_s not
+  //! finite > 0. A refused filter answers invalid_parameter from predict(), update() and step()
+  //! with its estimate untouched.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
+  double period_s() const noexcept { return p_.period_s; }
+
+  //! One sample: predict(in.u, in.delta_f_nominal), then update(in.y) (detail::estimator_sample).
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
+    return detail::estimator_sample(*this, in, out, diag);
+  }
 
   //! X̂ = X̂_0, P = P_0, counters cleared.
   void reset() noexcept {
@@ -291,5 +343,7 @@ class Eskf {
   double theta_ = 0.0;
   long projections_ = 0;
 };
+
+ADCS_ASSERT_COMPONENT(Eskf<3, 1, 1, 1>);
 
 }  // namespace adcs

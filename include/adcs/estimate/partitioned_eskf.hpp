@@ -26,6 +26,9 @@ class PartitionedEskf {
   static constexpr int N = N1 + N2;
   static constexpr int NY = NY1 + NY2;
   using Params = EskfParams<N, NU, NL, NY>;
+  using Input = EskfInput<NU, NL, NY>;
+  using Output = EskfOutput<N>;
+  using Diagnostics = EskfDiagnostics;
   using Block1 = Eskf<N1, NU, NL, NY1>;
   using Block2 = Eskf<N2, NU, NL, NY2>;
   using State = Vec<N>;
@@ -53,6 +56,12 @@ class PartitionedEskf {
   //! (Eskf::status: finite model, q >= 0, S PSD, R SPD, P_0 PSD with tr > 0). A refused filter
   //! answers invalid_parameter from predict() and update() with its estimate untouched.
   Status status() const noexcept { return status_; }
+  double period_s() const noexcept { return b1_.period_s(); }
+
+  //! One sample: predict(in.u, in.delta_f_nominal), then update(in.y) (detail::estimator_sample).
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
+    return detail::estimator_sample(*this, in, out, diag);
+  }
 
   void reset() noexcept {
     b1_.reset();
@@ -230,6 +239,7 @@ class PartitionedEskf {
     b.q = p.q;
     b.S = p.S;
     b.theta_policy = p.theta_policy;
+    b.period_s = p.period_s;
     return b;
   }
 

@@ -12,6 +12,7 @@
 // A "skip" mode (L3 of spec §B.9-1) ignores saturated samples instead.
 #include <cmath>
 
+#include "adcs/core/component.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
@@ -45,11 +46,32 @@ struct SaturatedEsfParams {
   Mat3 P0 = 0.01 * Mat3::Identity();                  //!< P_0 (spec §B.5: 0.01 I), symmetric PSD, tr > 0
   ThetaPolicy theta_policy = ThetaPolicy::trace_optimal;
   SaturationUpdate saturation = SaturationUpdate::truncated;
+  double period_s = kUnset;                           //!< [s] h, the period A_d was discretised at, no default
+};
+
+//! One filter sample of one axis.
+struct SaturatedEsfInput {
+  double u_prev = 0.0;           //!< [N] u_{k−1}, the axis's control force over the last period
+  double delta_f_nominal = 0.0;  //!< [N] Δf̄ (0: nominal model f̄ = 0)
+  double y_c_m_s2 = 0.0;         //!< [m/s²] the reading, possibly at the range limit
+  double u = 0.0;                //!< [N] u_k, through the feedthrough D
+};
+
+struct SaturatedEsfOutput {
+  Vec3 x_hat = Vec3::Zero();  //!< [m, m/s, N] X̂_k = [r; ṙ; f]
+};
+
+struct SaturatedEsfDiagnostics {
+  Status predict = Status::ok;  //!< the time update's status
+  Status update = Status::ok;   //!< the measurement update's (saturated: set-valued or skipped)
 };
 
 class SaturatedEsf {
  public:
   using Params = SaturatedEsfParams;
+  using Input = SaturatedEsfInput;
+  using Output = SaturatedEsfOutput;
+  using Diagnostics = SaturatedEsfDiagnostics;
 
   explicit SaturatedEsf(const Params& p) noexcept : p_(p) {
     Q1_ = 4.0 * p_.q * p_.B_e * p_.B_e.transpose();  // seed 004 eq. (18), l = 1
@@ -57,17 +79,34 @@ class SaturatedEsf {
     const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C) &&
                     std::isfinite(p_.D) && finite_nonnegative(p_.q) && finite_nonnegative(p_.S) &&
                     finite_positive(p_.R_a) && p_.y_min < p_.y_max && all_finite(p_.x0) &&
-                    symmetric_positive_semidefinite<3>(p_.P0) && p_.P0.trace() > 0.0;
+                    symmetric_positive_semidefinite<3>(p_.P0) && p_.P0.trace() > 0.0 &&
+                    finite_positive(p_.period_s);
     status_ = ok ? Status::ok : Status::invalid_parameter;
     theta_fixed_ = std::sqrt(Q1_.trace() / p_.P0.trace());
     reset();
   }
   //! ok, or invalid_parameter: A_d, B_d, B_e, C, D or X̂_0 not finite (unset); q or S not finite
   //! or < 0; R_a not finite > 0; not y_min < y_max (NaN fails; ±inf: no bound); P_0 not
-  //! symmetric PSD or tr P_0 = 0. A refused filter answers invalid_parameter from predict() and
-  //! update() with its estimate untouched; fuse_axis() refuses it too.
+  //! symmetric PSD or tr P_0 = 0; period_s not finite > 0. A refused filter answers invalid_parameter from predict()
+  //! and update() with its estimate untouched; fuse_axis() refuses it too.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
+  double period_s() const noexcept { return p_.period_s; }
+
+  //! One sample: predict(in.u_prev, in.delta_f_nominal), then update(in.y_c_m_s2, in.u). A
+  //! rejected measurement leaves the prediction (the filter coasts); a rejected time update
+  //! leaves everything. seed 004's closed loop interleaves the two halves with the control law
+  //! (predict, control from the prediction, update with the new u), so they stay public.
+  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
+    const Status sp = predict(in.u_prev, in.delta_f_nominal);
+    const Status su = usable(sp) ? update(in.y_c_m_s2, in.u) : sp;
+    out.x_hat = x_;
+    if (diag) {
+      diag->predict = sp;
+      diag->update = su;
+    }
+    return usable(sp) ? su : sp;
+  }
 
   void reset() noexcept {
     x_ = p_.x0;
@@ -116,10 +155,10 @@ class SaturatedEsf {
     Mat3 P_new = IKC * P_ * IKC.transpose() + R_eff * K * K.transpose();  // seed 004 eq. (21) P*
     Vec3 x_new;
     if (!upper && !lower) {
-      x_new = x_ + K * (y_c - y_pred);                              // seed 004 eqs. (31), (32)
+      x_new = x_ + K * (y_c - y_pred);                              // seed 004 eqs. (20), (31), (32)
     } else {
       const double sd = std::sqrt(S_y);
-      // Standardised distance of the bound from the prediction, towards the admissible side.
+      // Standardised distance of the bound from the prediction, towards the admissible side.   seed 004 eq. (23)
       const double t = upper ? (p_.y_max - y_pred) / sd : (y_pred - p_.y_min) / sd;
       const TruncatedMoments m = upper_truncated_std_normal(t);
       const double mean = upper ? y_pred + sd * m.mean : y_pred - sd * m.mean;  // E[y | Y^k]
@@ -159,5 +198,7 @@ class SaturatedEsf {
   Mat3 P_ = Mat3::Identity();
   long saturated_updates_ = 0;
 };
+
+ADCS_ASSERT_COMPONENT(SaturatedEsf);
 
 }  // namespace adcs

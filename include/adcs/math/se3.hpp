@@ -287,7 +287,7 @@ inline Se3 se3_exp(const Vec6& eta) noexcept {
   return Se3{so3_exp(theta), so3_left_jacobian(theta) * eta.tail<3>()};
 }
 
-//! log(g)^∨ = [θ; V(θ)⁻¹ R], θ = so3_log(C), ‖θ‖ ≤ π. spec §A.2.1, §A.2.3
+//! log(g)^∨ = [θ; V(θ)⁻¹ R], θ = so3_log(C), ‖θ‖ ≤ π. spec §A.2.1, §A.2.3, seed 003 eq. (7)
 inline Vec6 se3_log(const Se3& g) noexcept {
   const Vec3 theta = so3_log(g.C);
   Vec6 eta;
@@ -327,7 +327,7 @@ inline Mat3 se3_T(const Vec3& theta, const Vec3& beta) noexcept {
                             se3_gamma(phi));
 }
 
-//! G(η) = [[A(θ), 0], [T(θ,β), A(θ)]], η̇ = G(η) ξ_e. spec §A.2.3, seed 003 eq. (8)
+//! G(η) = [[A(θ), 0], [T(θ,β), A(θ)]], the matrix of η̇ = G(η) ξ_e. spec §A.2.3, seed 003 eq. (9)
 inline Mat6 se3_G(const Vec6& eta) noexcept {
   const Vec3 theta = eta.head<3>();
   const Vec3 beta = eta.tail<3>();
@@ -422,7 +422,7 @@ inline Vec3 se3_T_dot_times(const Vec3& theta, const Vec3& beta, const Vec3& the
 
 }  // namespace detail
 
-//! G(η) = [[A, 0], [T, A]] kept as its 3×3 blocks, with A⁻¹ (spec §A.2.3, seed 003 eq. (8)): a
+//! G(η) = [[A, 0], [T, A]] kept as its 3×3 blocks, with A⁻¹ (spec §A.2.3, seed 003 eq. (9)): a
 //! law only multiplies vectors by G, Gᵀ and G⁻¹, and the block-triangular form does each in
 //! 2-3 3×3 products instead of a dense 6×6 product or an explicit −A⁻¹TA⁻¹.
 //! Like an Eigen matrix, a default-constructed one is uninitialised (identity() gives G(0) = I):

@@ -8,8 +8,8 @@
 //           − I_sc⁻¹(T_Csc + w_TCsc + T_Dsc)                                               seed 004 eq. (3)
 //
 // (printed "+" on K_rot, D_rot kept: negative electrostatic stiffness, spec B.10 #13), in the
-// extended form (6) with the disturbances f = [T_Dsc; F_Dsc; T_Dtm] appended after each loop
-// (27 states, spec §B.2.2), the per-axis accelerometer model (10)-(13) with its ±6e-6 m/s² range,
+// extended form of seed 004 eq. (6) with the disturbances f = [T_Dsc; F_Dsc; T_Dtm] appended after each loop
+// (27 states, spec §B.2.2), the per-axis accelerometer model (seed 004 eqs. (10)-(13)) with its ±6e-6 m/s² range,
 // the exact ZOH discretisation at h (spec §B.3) and the noise densities → per-sample σ.
 //
 // 0-based state index map (spec §B.2.2): φ_sc 0-2, φ̇_sc 3-5, T_Dsc 6-8, r 9-11, ṙ 12-14,
@@ -24,7 +24,7 @@
 
 namespace adcs {
 
-inline constexpr int kDragFreeStates = 27;  //!< extended state (6)
+inline constexpr int kDragFreeStates = 27;  //!< extended state, seed 004 eq. (6)
 inline constexpr int kDragFreeInputs = 9;   //!< [T_Csc; F_Csc; T_Ctm]
 inline constexpr int kDragFreeOutputs = 9;  //!< [φ_sc; r_rel; φ_rel] (5)
 
@@ -44,7 +44,7 @@ struct DragFreeParams {
   Mat3 D_trans = 1.4e-11 * Mat3::Identity();  //!< [N s/m] (printed "N m s/rad", spec B.10 #10)
   Mat3 K_rot = 1e-9 * (Mat3() << 1, 10, 10, 10, 1, 10, 10, 10, 1).finished();  //!< [N m/rad]
   Mat3 D_rot = 1.4e-11 * Mat3::Identity();    //!< [N m s/rad]
-  double h = 0.1;                             //!< [s] sample and actuation period
+  double period_s = 0.1;                      //!< [s] h, sample and actuation period
   double accel_min = -6e-6;                   //!< [m/s²] accelerometer range y̲
   double accel_max = 6e-6;                    //!< [m/s²] accelerometer range ȳ
   // One-sided amplitude spectral densities of white noise (spec §B.3, B.10 #4):
@@ -58,13 +58,13 @@ struct DragFreeParams {
 
 //! True when the parameters define the model: masses finite > 0; I_tm, I_sc symmetric positive
 //! definite; K_trans, D_trans, K_rot, D_rot finite (any sign: the printed "+" on K_rot, D_rot is a
-//! negative electrostatic stiffness, spec B.10 #13); h finite > 0; accel_min < accel_max, both
+//! negative electrostatic stiffness, spec B.10 #13); period_s (h) finite > 0; accel_min < accel_max, both
 //! finite; noise densities finite >= 0. drag_free_discretize, drag_free_axis_model and
 //! DragFreeAdrc refuse (invalid_parameter) anything else.
 inline bool valid(const DragFreeParams& p) noexcept {
   return finite_positive(p.m_tm) && finite_positive(p.m_sc) && symmetric_positive_definite<3>(p.I_tm) &&
          symmetric_positive_definite<3>(p.I_sc) && all_finite(p.K_trans) && all_finite(p.D_trans) &&
-         all_finite(p.K_rot) && all_finite(p.D_rot) && finite_positive(p.h) && std::isfinite(p.accel_min) &&
+         all_finite(p.K_rot) && all_finite(p.D_rot) && finite_positive(p.period_s) && std::isfinite(p.accel_min) &&
          std::isfinite(p.accel_max) && p.accel_min < p.accel_max && finite_nonnegative(p.asd_T_sc) &&
          finite_nonnegative(p.asd_F_sc) && finite_nonnegative(p.asd_T_tm) && finite_nonnegative(p.asd_pos) &&
          finite_nonnegative(p.asd_acc);
@@ -82,12 +82,12 @@ struct DragFreeNoise {
 };
 inline DragFreeNoise drag_free_noise(const DragFreeParams& p) noexcept {
   const bool t = p.two_sided_noise;
-  return DragFreeNoise{asd_to_sigma(p.asd_T_sc, p.h, t), asd_to_sigma(p.asd_F_sc, p.h, t),
-                       asd_to_sigma(p.asd_T_tm, p.h, t), asd_to_sigma(p.asd_pos, p.h, t),
-                       asd_to_sigma(p.asd_acc, p.h, t)};
+  return DragFreeNoise{asd_to_sigma(p.asd_T_sc, p.period_s, t), asd_to_sigma(p.asd_F_sc, p.period_s, t),
+                       asd_to_sigma(p.asd_T_tm, p.period_s, t), asd_to_sigma(p.asd_pos, p.period_s, t),
+                       asd_to_sigma(p.asd_acc, p.period_s, t)};
 }
 
-//! Continuous extended model (6): Ẋ = A X + B(u + w) + B_e ḟ, Y = C X + d (spec §B.2.2).
+//! Continuous extended model, seed 004 eq. (6): Ẋ = A X + B(u + w) + B_e ḟ, Y = C X + d (spec §B.2.2).
 struct DragFreeContinuous {
   Mat<27, 27> A = Mat<27, 27>::Zero();
   Mat<27, 9> B = Mat<27, 9>::Zero();
@@ -95,7 +95,7 @@ struct DragFreeContinuous {
   Mat<9, 27> C = Mat<9, 27>::Zero();
 };
 
-//! A, B, B_e, C of (6) from (4) with f moved into the state (block indices 0..8 of 3 x 3).
+//! A, B, B_e, C of seed 004 eq. (6) from (4) with f moved into the state (block indices 0..8 of 3 x 3).
 inline DragFreeContinuous drag_free_continuous(const DragFreeParams& p) noexcept {
   DragFreeContinuous m;
   const Mat3 I = Mat3::Identity();
@@ -123,7 +123,7 @@ inline DragFreeContinuous drag_free_continuous(const DragFreeParams& p) noexcept
 }
 
 //! Discrete model at h: [[A_d, B_d],[0, I]] = expm([[A, B],[0, 0]] h), C_d = C, and the discrete
-//! B_e is the continuous selector (f is piecewise constant and jumps by G_k at samples, §B.3).
+//! B_e is the continuous selector (f is piecewise constant and jumps by G_k at samples, §B.3).   seed 004 eq. (8)
 struct DragFreeDiscrete {
   Mat<27, 27> A_d = Mat<27, 27>::Identity();
   Mat<27, 9> B_d = Mat<27, 9>::Zero();
@@ -136,7 +136,7 @@ struct DragFreeDiscrete {
   if (!valid(p)) return Status::invalid_parameter;
   const DragFreeContinuous c = drag_free_continuous(p);
   DragFreeDiscrete d;
-  const Status s = zoh_discretize<27, 9>(c.A, c.B, p.h, d.A_d, d.B_d);
+  const Status s = zoh_discretize<27, 9>(c.A, c.B, p.period_s, d.A_d, d.B_d);
   if (s != Status::ok) return s;
   d.B_e = c.B_e;
   d.C_d = c.C;
@@ -144,7 +144,7 @@ struct DragFreeDiscrete {
   return Status::ok;
 }
 
-//! Per-axis accelerometer model (10)-(13), X = [r_j; ṙ_j; f_j], y = C X + D(u + w) + d, with
+//! Per-axis accelerometer model, seed 004 eqs. (10)-(13), X = [r_j; ṙ_j; f_j], y = C X + D(u + w) + d, with
 //! the diagonal K_trans, D_trans only (spec §B.2.3 [A]: the 0.039e-6 N/m couplings go into f).
 struct DragFreeAxisModel {
   Mat3 A_d = Mat3::Identity();
@@ -167,7 +167,7 @@ struct DragFreeAxisModel {
   B << 0.0, -1.0 / p.m_sc, 0.0;
   DragFreeAxisModel m;
   Mat<3, 1> B_d;
-  const Status s = zoh_discretize<3, 1>(A, B, p.h, m.A_d, B_d);
+  const Status s = zoh_discretize<3, 1>(A, B, p.period_s, m.A_d, B_d);
   if (s != Status::ok) return s;
   m.B_d = B_d;
   m.C << K / p.m_tm, D / p.m_tm, 1.0 / p.m_sc;  // seed 004 eq. (11) C = [C_o, D_o]
@@ -193,7 +193,7 @@ inline Vec3 drag_free_tm_acceleration(const DragFreeParams& p, const Vec<27>& X)
   return -(p.K_trans * X.segment<3>(Ix::r) + p.D_trans * X.segment<3>(Ix::r_dot)) / p.m_tm;
 }
 
-//! Accelerometer saturation (14): y_c = clamp(y, y̲, ȳ).
+//! Accelerometer saturation, seed 004 eq. (14): y_c = clamp(y, y̲, ȳ).
 inline double saturate_accelerometer(const DragFreeParams& p, double y) noexcept {
   return y > p.accel_max ? p.accel_max : (y < p.accel_min ? p.accel_min : y);
 }

@@ -1,9 +1,11 @@
 #pragma once
 // Ready-made flexible-spacecraft data: seed 002 Table 1 (spec §B.5), 2 solar panels x 4 modes.
 // Every number below is GIVEN by the paper except where marked; F_s2 = −F_s1 (symmetric panels)
-// and the shared Ω, ξ are the spec's reading B.4 #17.
+// and the shared Ω, ξ are the spec's reading B.4 #17. Also the paper's tracking gains with its
+// true inertia (the laws' own header holds no plant data).
 #include <cmath>
 
+#include "adcs/control/euler_tracking_common.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
 
 namespace adcs {
@@ -25,6 +27,13 @@ inline FlexibleSpacecraftParams<2, 4> flexible_params_seed002() noexcept {
     p.xi[l] = Vec<4>::Constant(0.005);                          // [-] seed 002 Table 1
   }
   return p;
+}
+
+//! The paper's gains with its true inertia (seed 002 Tables 1-2): what both laws use on §B.5.
+inline EulerTrackingGains seed002_tracking_gains() noexcept {
+  EulerTrackingGains g;
+  g.J = flexible_params_seed002().J;
+  return g;
 }
 
 }  // namespace adcs

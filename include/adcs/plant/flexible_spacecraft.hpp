@@ -23,10 +23,12 @@
 #include <Eigen/Cholesky>
 
 #include "adcs/core/failure_hook.hpp"
+#include "adcs/core/plant.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
 #include "adcs/math/euler.hpp"
+#include "adcs/math/euler_dynamics.hpp"
 #include "adcs/math/so3.hpp"
 
 namespace adcs {
@@ -52,47 +54,6 @@ struct FlexibleSpacecraftParams {
   std::array<Vec<NM>, P> Omega = detail::unset_array<Vec<NM>, P>();      //!< [rad/s] natural frequencies (diag Ω_l)
   std::array<Vec<NM>, P> xi = detail::unset_array<Vec<NM>, P>();         //!< [-] modal damping ratios (diag ξ_l)
 };
-
-//! ϑ̈ = A + B u + D̄ in closed form at one (ϑ, ω) (spec §B.2), shared by plant tests and
-//! controllers. F, G, ϑ̇ = F ω are returned too so a controller computes them once.
-struct EulerAffine {
-  Mat3 F = Mat3::Identity();      //!< [-] ϑ̇ = F ω
-  Mat3 G = Mat3::Identity();      //!< [-] ω = G ϑ̇
-  Vec3 angles_dot = Vec3::Zero(); //!< [rad/s] ϑ̇
-  Vec3 A = Vec3::Zero();          //!< [rad/s²] drift −F Ġ ϑ̇ − F J⁻¹ (ω × J ω)
-  Mat3 B = Mat3::Identity();      //!< [rad/(s² N m)] F J⁻¹
-  Mat3 B_inv = Mat3::Identity();  //!< [N m s²/rad] J G
-};
-
-//! Fills `out` for x-y-z Euler angles ϑ [rad] and body rate ω [rad/s] (J⁻¹ precomputed by the
-//! caller). Returns singular at gimbal lock (|cos θ| < kEulerSingularCos) and non_finite_input for
-//! NaN/Inf, leaving `out` untouched in both cases.   seed 002 eqs. (3)-(4), spec §B.2
-inline Status euler_affine(const Mat3& J, const Mat3& J_inv, const Vec3& angles, const Vec3& omega,
-                           EulerAffine& out) noexcept {
-  if (!all_finite(angles) || !all_finite(omega)) return Status::non_finite_input;
-  Mat3 F;
-  const Status s = euler123_F(angles, F);
-  if (s != Status::ok) return s;
-  out.F = F;
-  out.G = euler123_G(angles);
-  out.angles_dot = F * omega;
-  const Mat3 FJinv = F * J_inv;
-  out.A = -F * (euler123_G_dot(angles, out.angles_dot) * out.angles_dot) - FJinv * omega.cross(J * omega);
-  out.B = FJinv;
-  out.B_inv = J * out.G;
-  return Status::ok;
-}
-
-//! Euler–Lagrange inertia J* = Gᵀ J G and Coriolis matrix C = Gᵀ J Ġ − Gᵀ (J G ϑ̇)× G
-//! (seed 002 eq. (4), repaired B.4 #3). Not used by the controllers (euler_affine is cheaper);
-//! kept for the B-S2/B-S3 checks and for users who want the EL form.
-inline void euler_lagrange_terms(const Mat3& J, const Vec3& angles, const Vec3& angles_dot,
-                                 Mat3& J_star, Mat3& C) noexcept {
-  const Mat3 G = euler123_G(angles);
-  const Mat3 G_dot = euler123_G_dot(angles, angles_dot);
-  J_star = G.transpose() * J * G;
-  C = G.transpose() * J * G_dot - G.transpose() * skew(J * G * angles_dot) * G;
-}
 
 //! Truth plant of seed 002 (spec §B.2).
 //!
@@ -222,5 +183,7 @@ class FlexibleSpacecraft {
   Mat3 J_inv_ = Mat3::Identity();
   Status status_ = Status::ok;
 };
+
+ADCS_ASSERT_PLANT(FlexibleSpacecraft<2, 4>);
 
 }  // namespace adcs

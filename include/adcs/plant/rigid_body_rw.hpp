@@ -15,6 +15,7 @@
 #include <Eigen/Cholesky>
 
 #include "adcs/core/failure_hook.hpp"
+#include "adcs/core/plant.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
@@ -118,5 +119,7 @@ class RigidBodyRw {
   Eigen::LDLT<Mat3> ldlt_;
   Status status_ = Status::ok;
 };
+
+ADCS_ASSERT_PLANT(RigidBodyRw<4>);
 
 }  // namespace adcs

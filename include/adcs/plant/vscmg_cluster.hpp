@@ -21,6 +21,7 @@
 #include <Eigen/Cholesky>
 
 #include "adcs/core/failure_hook.hpp"
+#include "adcs/core/plant.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
@@ -285,6 +286,8 @@ class VscmgFullPlant {
   Status status_ = Status::ok;
 };
 
+ADCS_ASSERT_PLANT(VscmgFullPlant<4, 3>);
+
 //! TP-CTRL (spec A.2.4): seed 001 eq. (5) with constant inertia J = J_n and TRUE axes.
 //!
 //! State  x = [sigma_BN (3) [-]; omega_BN_B (3) [rad/s]; gamma (M) [rad]; Omega_w (N) [rad/s]].
@@ -348,7 +351,7 @@ class VscmgCtrlPlant {
     }
     const Vec3 w = omega_BN_B(x);
     const Vec3 h = momentum_B(x);
-    const Vec3 torque = -w.cross(h) - p_.truth.Q_act(gamma(x)) * u;  // seed 001 eq. (5), (11)
+    const Vec3 torque = -w.cross(h) - p_.truth.Q_act(gamma(x)) * u;  // seed 001 eqs. (5), (11)
     xdot.template head<3>() = mrp_G(sigma_BN(x)) * w;                 // seed 001 eq. (6)
     xdot.template segment<3>(3) = llt_.solve(torque);
     xdot.template segment<M>(6) = u.template head<M>();
@@ -361,5 +364,7 @@ class VscmgCtrlPlant {
   Eigen::LLT<Mat3> llt_;
   Status status_ = Status::ok;
 };
+
+ADCS_ASSERT_PLANT(VscmgCtrlPlant<4, 3>);
 
 }  // namespace adcs

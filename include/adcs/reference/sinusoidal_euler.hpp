@@ -4,18 +4,12 @@
 // with a = (π/180)[0.5, 1, −0.5] rad and ω_r = 0.1 rad/s in the paper.
 #include <cmath>
 
+#include "adcs/core/signals.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
 
 namespace adcs {
-
-//! Everything an Euler-angle tracking law needs from the reference at one instant.
-struct EulerReferenceSample {
-  Vec3 angles = Vec3::Zero();       //!< [rad] ϑ_d (x-y-z)
-  Vec3 angles_dot = Vec3::Zero();   //!< [rad/s] ϑ̇_d
-  Vec3 angles_ddot = Vec3::Zero();  //!< [rad/s²] ϑ̈_d
-};
 
 //! Defaults: seed 002 §4's reference (the flexible-* scenarios' manoeuvre).
 struct SinusoidalEulerParams {

@@ -5,6 +5,7 @@
 // σ_d itself is integrated by the caller alongside the plant (same integrator, same step), and
 // never shadow-switched (spec §A.2.4: e = σ − σ_d needs both on one continuous branch); σ̇_d and
 // σ̈_d are evaluated analytically from σ_d(t) here.
+#include "adcs/core/signals.hpp"
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/core/validation.hpp"
@@ -16,15 +17,6 @@ namespace adcs {
 struct SinusoidalRateParams {
   Vec3 amplitude_rad_s = Vec3::Constant(0.02);     //!< [rad/s] a, seed 001 eq. (27); finite
   Vec3 period_s = Vec3(800.0, 600.0, 400.0);       //!< [s] T_k, seed 001 eq. (27); finite, > 0
-};
-
-//! Everything a tracking law needs from the reference at one instant.
-struct MrpReferenceSample {
-  Vec3 sigma = Vec3::Zero();       //!< [-] σ_d (σ_RN)
-  Vec3 sigma_dot = Vec3::Zero();   //!< [1/s] σ̇_d
-  Vec3 sigma_ddot = Vec3::Zero();  //!< [1/s²] σ̈_d
-  Vec3 omega = Vec3::Zero();       //!< [rad/s] ω_f, reference axes
-  Vec3 omega_dot = Vec3::Zero();   //!< [rad/s²] ω̇_f, reference axes
 };
 
 class SinusoidalRateReference {
