@@ -16,7 +16,7 @@
 #include "scenarios/rigid_rw_common.hpp"
 #include "scenarios/status_counts.hpp"
 #include "sim/metrics.hpp"
-#include "sim/sampled_data.hpp"
+#include "sim/closed_loop.hpp"
 
 namespace adcs::sim {
 namespace {
@@ -111,7 +111,7 @@ class CubesatPpc final : public Scenario {
     RwAllocationParams<kRigidRwWheels> ap;
     ap.G_s_B = pp.G_s_B;
     ap.torque_limit = p.get_number("torque_limit_Nm");
-    const RwTorqueAllocator<kRigidRwWheels> allocator(ap);
+    RwTorqueAllocator<kRigidRwWheels> allocator(ap);
     if (allocator.status() != Status::ok) throw ParamError("torque_limit_Nm must be > 0");
     const ActuatorLimits<0, kRigidRwWheels> limits = wheel_limits(p);
     const Vec3 sigma_RN = p.get_vec<3>("sigma_RN");
@@ -142,35 +142,39 @@ class CubesatPpc final : public Scenario {
     double torque_max = 0.0, margin_min = INFINITY;
     long saturated = 0, samples = 0, nonfinite = 0, failed = 0, speed_held = 0;
     StatusCounts statuses;
-    BodyTorque cmd;
-    EulerTrackingInput m;
-    m.reference = ref;
-    Vec<kRigidRwWheels> u_s = Vec<kRigidRwWheels>::Zero();
     SampledDataOptions opt;
     opt.t_end = p.get_number("duration_s");
     opt.sample_period = p.get_number("control_period_s");
     const double t_end = opt.t_end;
 
-    auto control = [&](double t, const RigidRwPlant::State& xs, RigidRwPlant::Input& u) {
-      m.t_s = t;  // perfect measurements (assumed), the Euler view the law expects
+    // The loop (sim/closed_loop.hpp): perfect sensors (assumed) in the Euler view the law
+    // expects → PPC → min-norm allocation with the torque limit → each wheel's speed limit →
+    // the wheel motors, and the optional torque kick as the plant's external torque.
+    auto sensors = [&](double t, const RigidRwPlant::State& xs) {
+      EulerTrackingInput m;
+      m.t_s = t;
       m.state = to_euler123(AttitudeState{RigidRwPlant::sigma_BN(xs), RigidRwPlant::omega_BN_B(xs)});
-      PpcNeuralDiagnostics d;
-      const Status s = law.step(m, cmd, &d);
-      statuses.add(s);
-      if (!usable(s)) ++failed;
-      if (usable(s)) margin_min = std::min(margin_min, d.funnel_margin);
-      if (!all_finite(cmd.torque_B_Nm)) ++nonfinite;
-      WheelTorques<kRigidRwWheels> w;
-      if (allocator.step(cmd, w) == Status::saturated) ++saturated;
-      u_s = w.u_s_Nm;
-      LimitReport lr;  // each wheel's speed limit (the torque limit is the allocator's)
-      if (limit_wheel_torques<kRigidRwWheels>(limits, RigidRwPlant::Omega(xs), u_s, &lr) == Status::saturated)
-        speed_held += lr.wheel_speed_held;
-      u.head<kRigidRwWheels>() = u_s;
-      u.tail<3>() = t >= kick_start && t < kick_end ? kick : Vec3::Zero();
-      ++samples;
+      m.reference = ref;
+      return m;
     };
-    auto observe = [&](double t, const RigidRwPlant::State& xs, const RigidRwPlant::Input& u) {
+    auto to_actuation = [](double, const RigidRwPlant::State&, const BodyTorque& cmd) { return cmd; };
+    auto to_plant = [&](double t, const RigidRwPlant::State& xs, const WheelTorques<kRigidRwWheels>& w,
+                        RigidRwPlant::Input& u) {
+      set_wheel_input(limits, xs, w, u, speed_held);
+      u.tail<3>() = t >= kick_start && t < kick_end ? kick : Vec3::Zero();
+    };
+    auto observe = [&](const auto& s) {
+      const double t = s.t_s;
+      const RigidRwPlant::State& xs = s.x;
+      const RigidRwPlant::Input& u = s.u;
+      if (!s.final) {  // once per control step
+        ++samples;
+        statuses.add(s.controller_status);
+        if (!usable(s.controller_status)) ++failed;
+        else margin_min = std::min(margin_min, s.controller_diagnostics.funnel_margin);
+        if (!all_finite(s.command.torque_B_Nm)) ++nonfinite;
+        if (s.actuation_status == Status::saturated) ++saturated;
+      }
       const double err = mrp_principal_angle(mrp_subtract(RigidRwPlant::sigma_BN(xs), sigma_RN));
       t_series.push_back(t);
       err_series.push_back(err);
@@ -189,14 +193,12 @@ class CubesatPpc final : public Scenario {
         }
         for (int i = 0; i < 3; ++i) row.push_back(lo(i));
         for (int i = 0; i < 3; ++i) row.push_back(hi(i));
-        for (int i = 0; i < 3; ++i) row.push_back(cmd.torque_B_Nm(i));
+        for (int i = 0; i < 3; ++i) row.push_back(s.command.torque_B_Nm(i));
         for (int i = 0; i < kRigidRwWheels; ++i) row.push_back(u(i));
-        if (t == t_end) csv->record_final(row.data()); else csv->record(row.data());
+        csv->record_row(row, s.final);
       }
     };
-    with_integrator(plant, p, [&](auto& integrator) {
-      run_sampled_data(plant, integrator, x, opt, control, observe);
-    });
+    closed_loop(plant, x, opt, integrator_choice(p), sensors, law, to_actuation, allocator, to_plant, observe);
     if (csv) csv->close();
 
     constexpr double kRad2Deg = 180.0 / kPiRad;

@@ -19,13 +19,13 @@
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
+#include "scenarios/param_binding.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/truth_plants.hpp"
 #include "scenarios/verdicts.hpp"
 #include "scenarios/status_counts.hpp"
 #include "sim/recorder.hpp"
-#include "sim/rk4_integrator.hpp"
-#include "sim/sampled_data.hpp"
+#include "sim/closed_loop.hpp"
 
 namespace adcs::sim {
 namespace {
@@ -38,6 +38,74 @@ constexpr const char* kB5 = "assumed (spec B.5)";
 //! Per-sample errors of the companion (nominal-gain) run, overlaid on the halved-gain plots.
 struct CompanionTrace {
   std::vector<double> e[3];
+};
+
+//! Every parameter of the seed-002 scenarios, declared once (scenarios/param_binding.hpp). The
+//! first two members are the variant (not parameters): they choose the list and its defaults.
+struct FlexibleConfig {
+  bool halfgain = false, dropout = false;
+
+  double duration_s = 0, control_period_s = 0, plant_step_max_s = 0, ref_frequency_rad_s = 0, disturbance_Nm = 0;
+  double n0_rad_s = 0, tau_mu = 0, sigma = 0, beta = 0, gamma = 0, record_every = 0;
+  double dropout_start_s = 0, dropout_duration_s = 0;
+  Mat3 J_kgm2 = Mat3::Zero();
+  Mat<3, 4> F_s1 = Mat<3, 4>::Zero();
+  Vec<4> Omega_Hz = Vec<4>::Zero(), xi = Vec<4>::Zero();
+  Vec3 theta0_deg = Vec3::Zero(), thetadot0_deg_s = Vec3::Zero(), ref_amplitude_deg = Vec3::Zero();
+  Vec3 K = Vec3::Zero(), lambda = Vec3::Zero(), tau_w = Vec3::Zero();
+  Vec3 rho0_deg = Vec3::Zero(), rho_inf_deg = Vec3::Zero(), k_rho = Vec3::Zero(), delta = Vec3::Zero();
+  Vec<2> window_s = Vec<2>::Zero();
+  std::string units, robust_clamp, funnel_recovery, companion, on_failure;
+
+  template <class F>
+  void visit(F&& f) {
+    const FlexibleSpacecraftParams<2, 4> fp = flexible_params_seed002();
+    const double g = halfgain ? 0.5 : 1.0;
+    const std::string gain_src = halfgain ? std::string(kTable) + " x 0.5 (spec B.4 #24)" : kTable;
+    f.number("duration_s", duration_s, 100.0, "s", kB5);
+    f.number("control_period_s", control_period_s, 1e-4, "s",
+             std::string(kB5) + ": the paper's law is continuous; 1e-4 s in U_rad (stiff near rho_inf)");
+    f.number("plant_step_max_s", plant_step_max_s, 1e-3, "s", "ours: largest RK4 step of the truth plant (<= control period used)");
+    f.mat("J_kgm2", J_kgm2, fp.J, "kg m^2", kTable);
+    f.mat("F_s1", F_s1, fp.F_s[0], "kg^0.5 m", std::string(kTable) + "; F_s2 = -F_s1 (spec B.4 #17)");
+    f.vec("Omega_Hz", Omega_Hz, Vec<4>(0.379, 1.042, 1.331, 2.226), "Hz", std::string(kTable) + ": both panels (B.4 #17)");
+    f.vec("xi", xi, Vec<4>::Constant(0.005), "-", kTable);
+    f.vec("theta0_deg", theta0_deg, Vec3(0.25, 0.15, -0.20), "deg", kTable);
+    f.vec("thetadot0_deg_s", thetadot0_deg_s, Vec3(0.02, 0.01, -0.02), "deg/s", std::string(kTable) + " (B.4 #16)");
+    f.vec("ref_amplitude_deg", ref_amplitude_deg, Vec3(0.5, 1.0, -0.5), "deg", "seed 002 §4 (B.4 #23)");
+    f.number("ref_frequency_rad_s", ref_frequency_rad_s, 0.1, "rad/s", "seed 002 §4");
+    f.number("disturbance_Nm", disturbance_Nm, 0.0045, "N m", "seed 002 §4 (B.4 #22)");
+    f.number("n0_rad_s", n0_rad_s, 0.0011, "rad/s", "seed 002 §4");
+    f.vec("K", K, Vec3(0.5 * g, 0.1 * g, 0.5 * g), "-", gain_src);
+    f.vec("lambda", lambda, Vec3::Constant(0.125), "1/s", kTable);
+    f.vec("tau_w", tau_w, Vec3::Constant(0.5 * g), "-", gain_src);
+    f.number("tau_mu", tau_mu, 0.5 * g, "-", gain_src);
+    f.number("sigma", sigma, 0.01, "-", kTable);
+    f.number("beta", beta, 0.01, "-", kTable);
+    f.number("gamma", gamma, 0.01, "-", kTable);
+    f.vec("rho0_deg", rho0_deg, Vec3::Constant(0.3), "deg", kTable);
+    f.vec("rho_inf_deg", rho_inf_deg, Vec3::Constant(0.005), "deg", kTable);
+    f.vec("k_rho", k_rho, Vec3::Constant(0.15), "1/s", kTable);
+    f.vec("delta", delta, Vec3::Zero(), "-", std::string(kTable) + " (admissible: no e_i(0) = 0, B.4 #15)");
+    f.name("units", units, "U_rad", {"U_rad", "U_deg"}, "spec B.4 #18: U_rad reproduces all claims");
+    f.name("robust_clamp", robust_clamp, "off", {"off", "on"},
+           "spec §B.3 step 3: on = clamp z at a funnel edge and continue (flagged)");
+    f.name("funnel_recovery", funnel_recovery, "none", {"none", "reopen"},
+           "seed 002's law has no recovery (none); reopen = the library default (issue 15): re-open a "
+           "violated funnel from the current error, counted");
+    f.vec("window_s", window_s, Vec<2>(40.0, 100.0), "s", std::string(kB5) + ": steady-state window W_ss");
+    f.number("record_every", record_every, 100, "samples", "CSV decimation (in control samples)");
+    if (halfgain)
+      f.name("companion", companion, "run", {"run", "skip"}, "run: also simulate the nominal gains (P7, Figs. 9-11)");
+    if (dropout) {
+      f.number("dropout_start_s", dropout_start_s, 50.0, "s", "ours: in steady tracking, the funnel at rho_inf");
+      f.number("dropout_duration_s", dropout_duration_s, 2.0, "s", "issue 7: the rate measurement is NaN for 2 s");
+      f.name("on_failure", on_failure, "hold_last", {"hold_last", "safe_command"},
+             "issue 7: the torque is held through the dropout (the paper's ZOH reading); safe_command "
+             "(zero torque, the library default) leaves the funnel within the 2 s: with "
+             "funnel_recovery=none the paper law cannot come back, with reopen it does (issue 15)");
+    }
+  }
 };
 
 class FlexibleScenario final : public Scenario {
@@ -55,71 +123,20 @@ class FlexibleScenario final : public Scenario {
            (dropout_ ? "; fault: rate measurement NaN for 2 s from t = 50 s (ours)" : "");
   }
 
-  void declare(ParamSet& p) const override {
-    const FlexibleSpacecraftParams<2, 4> fp = flexible_params_seed002();
-    const double g = half_ ? 0.5 : 1.0;
-    const std::string gain_src = half_ ? std::string(kTable) + " x 0.5 (spec B.4 #24)" : kTable;
-    p.number("duration_s", 100.0, "s", kB5);
-    p.number("control_period_s", 1e-4, "s",
-             std::string(kB5) + ": the paper's law is continuous; 1e-4 s in U_rad (stiff near rho_inf)");
-    p.number("plant_step_max_s", 1e-3, "s", "ours: largest RK4 step of the truth plant (<= control period used)");
-    std::vector<std::vector<double>> J(3, std::vector<double>(3)), F(3, std::vector<double>(4));
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) J[i][j] = fp.J(i, j);
-      for (int j = 0; j < 4; ++j) F[i][j] = fp.F_s[0](i, j);
-    }
-    p.matrix("J_kgm2", J, "kg m^2", kTable);
-    p.matrix("F_s1", F, "kg^0.5 m", std::string(kTable) + "; F_s2 = -F_s1 (spec B.4 #17)");
-    p.vector("Omega_Hz", {0.379, 1.042, 1.331, 2.226}, "Hz", std::string(kTable) + ": both panels (B.4 #17)");
-    p.vector("xi", {0.005, 0.005, 0.005, 0.005}, "-", kTable);
-    p.vector("theta0_deg", {0.25, 0.15, -0.20}, "deg", kTable);
-    p.vector("thetadot0_deg_s", {0.02, 0.01, -0.02}, "deg/s", std::string(kTable) + " (B.4 #16)");
-    p.vector("ref_amplitude_deg", {0.5, 1.0, -0.5}, "deg", "seed 002 §4 (B.4 #23)");
-    p.number("ref_frequency_rad_s", 0.1, "rad/s", "seed 002 §4");
-    p.number("disturbance_Nm", 0.0045, "N m", "seed 002 §4 (B.4 #22)");
-    p.number("n0_rad_s", 0.0011, "rad/s", "seed 002 §4");
-    p.vector("K", {0.5 * g, 0.1 * g, 0.5 * g}, "-", gain_src);
-    p.vector("lambda", {0.125, 0.125, 0.125}, "1/s", kTable);
-    p.vector("tau_w", {0.5 * g, 0.5 * g, 0.5 * g}, "-", gain_src);
-    p.number("tau_mu", 0.5 * g, "-", gain_src);
-    p.number("sigma", 0.01, "-", kTable);
-    p.number("beta", 0.01, "-", kTable);
-    p.number("gamma", 0.01, "-", kTable);
-    p.vector("rho0_deg", {0.3, 0.3, 0.3}, "deg", kTable);
-    p.vector("rho_inf_deg", {0.005, 0.005, 0.005}, "deg", kTable);
-    p.vector("k_rho", {0.15, 0.15, 0.15}, "1/s", kTable);
-    p.vector("delta", {0.0, 0.0, 0.0}, "-", std::string(kTable) + " (admissible: no e_i(0) = 0, B.4 #15)");
-    p.name("units", "U_rad", {"U_rad", "U_deg"}, "spec B.4 #18: U_rad reproduces all claims");
-    p.name("robust_clamp", "off", {"off", "on"},
-           "spec §B.3 step 3: on = clamp z at a funnel edge and continue (flagged)");
-    p.name("funnel_recovery", "none", {"none", "reopen"},
-           "seed 002's law has no recovery (none); reopen = the library default (issue 15): re-open a "
-           "violated funnel from the current error, counted");
-    p.vector("window_s", {40.0, 100.0}, "s", std::string(kB5) + ": steady-state window W_ss");
-    p.number("record_every", 100, "samples", "CSV decimation (in control samples)");
-    if (half_)
-      p.name("companion", "run", {"run", "skip"}, "run: also simulate the nominal gains (P7, Figs. 9-11)");
-    if (dropout_) {
-      p.number("dropout_start_s", 50.0, "s", "ours: in steady tracking, the funnel at rho_inf");
-      p.number("dropout_duration_s", 2.0, "s", "issue 7: the rate measurement is NaN for 2 s");
-      p.name("on_failure", "hold_last", {"hold_last", "safe_command"},
-             "issue 7: the torque is held through the dropout (the paper's ZOH reading); safe_command "
-             "(zero torque, the library default) leaves the funnel within the 2 s: with "
-             "funnel_recovery=none the paper law cannot come back, with reopen it does (issue 15)");
-    }
-  }
+  void declare(ParamSet& p) const override { declare_config(p, prototype()); }
 
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
-    if (!half_ || p.get_name("companion") == "skip") return simulate(p, ctx, nullptr, nullptr);
+    const FlexibleConfig c = read_config(p, prototype());
+    if (!half_ || c.companion == "skip") return simulate(p, ctx, nullptr, nullptr);
     ParamSet nominal = p;  // the same run with the gains doubled back (B.4 #24)
     nominal.set("companion", "skip");
-    const Vec3 K = p.get_vec<3>("K"), tw = p.get_vec<3>("tau_w");
+    const Vec3 K = c.K, tw = c.tau_w;
     auto vec = [](const Vec3& v) {
       return "[" + format_number(v(0)) + "," + format_number(v(1)) + "," + format_number(v(2)) + "]";
     };
     nominal.set("K", vec(2.0 * K));
     nominal.set("tau_w", vec(2.0 * tw));
-    nominal.set("tau_mu", format_number(2.0 * p.get_number("tau_mu")));
+    nominal.set("tau_mu", format_number(2.0 * c.tau_mu));
     RunContext quiet = ctx;
     quiet.csv_path.clear();
     CompanionTrace trace;
@@ -200,12 +217,19 @@ class FlexibleScenario final : public Scenario {
  private:
   static constexpr const char* kAxis[3] = {"x", "y", "z"};
 
+  FlexibleConfig prototype() const {
+    FlexibleConfig c;
+    c.halfgain = half_;
+    c.dropout = dropout_;
+    return c;
+  }
+
   //! Dropout: the samples with a NaN rate are rejected (non_finite_input, torque held, estimates
   //! untouched); the attitude must stay bounded and every command finite.
-  void dropout_results(RunResult& r, const ParamSet& p, double err_after, long violations_after,
+  void dropout_results(RunResult& r, const FlexibleConfig& c, double err_after, long violations_after,
                        long nonfinite_cmd, const StatusCounts& statuses, double rho_inf) const {
     const long dropped = statuses.count(Status::non_finite_input);
-    const double expected = std::round(p.get_number("dropout_duration_s") / p.get_number("control_period_s"));
+    const double expected = std::round(c.dropout_duration_s / c.control_period_s);
     r.metrics.push_back({"att_err_max_rad", err_after});
     r.metrics.push_back({"funnel_violations_after_fault", double(violations_after)});
     r.metrics.push_back({"nonfinite_commands", double(nonfinite_cmd)});
@@ -225,48 +249,49 @@ class FlexibleScenario final : public Scenario {
 
   RunResult simulate(const ParamSet& p, const RunContext& ctx, const CompanionTrace* overlay,
                      CompanionTrace* capture) const {
+    const FlexibleConfig c = read_config(p, prototype());
     constexpr double d2r = 3.14159265358979323846 / 180.0;
     // --- plant (spec §B.5) ---
     FlexibleSpacecraftParams<2, 4> fp;
-    fp.J = p.get_mat<3, 3>("J_kgm2");
-    fp.F_s[0] = p.get_mat<3, 4>("F_s1");
+    fp.J = c.J_kgm2;
+    fp.F_s[0] = c.F_s1;
     fp.F_s[1] = -fp.F_s[0];
     for (int l = 0; l < 2; ++l) {
-      fp.Omega[l] = 2.0 * 3.14159265358979323846 * p.get_vec<4>("Omega_Hz");
-      fp.xi[l] = p.get_vec<4>("xi");
+      fp.Omega[l] = 2.0 * 3.14159265358979323846 * c.Omega_Hz;
+      fp.xi[l] = c.xi;
     }
     const Plant plant(fp);
     if (plant.status() != Status::ok) throw ParamError("plant parameters rejected (J, M_eff SPD, Omega > 0, xi >= 0)");
-    const FlexibleSimPlant sim{&plant, p.get_number("disturbance_Nm"), p.get_number("n0_rad_s")};
+    const FlexibleSimPlant sim{&plant, c.disturbance_Nm, c.n0_rad_s};
     SinusoidalEulerParams rp;
-    rp.amplitude_rad = d2r * p.get_vec<3>("ref_amplitude_deg");
-    rp.frequency_rad_s = p.get_number("ref_frequency_rad_s");
+    rp.amplitude_rad = d2r * c.ref_amplitude_deg;
+    rp.frequency_rad_s = c.ref_frequency_rad_s;
     const SinusoidalEulerReference ref(rp);
     if (ref.status() != Status::ok)
       throw ParamError("ref_amplitude_deg must be finite and ref_frequency_rad_s finite >= 0");
 
     // --- controller (spec §B.3, Table 2) ---
-    const double T = p.get_number("control_period_s");
+    const double T = c.control_period_s;
     EulerTrackingGains g;
     g.J = fp.J;  // the paper's law uses the true inertia
-    g.lambda = p.get_vec<3>("lambda");
-    g.K = p.get_vec<3>("K");
+    g.lambda = c.lambda;
+    g.K = c.K;
     g.compensator = seed002_compensator();
-    g.compensator.tau_w = p.get_vec<3>("tau_w");
-    g.compensator.tau_mu = p.get_number("tau_mu");
-    g.compensator.sigma = p.get_number("sigma");
-    g.compensator.beta = p.get_number("beta");
-    g.compensator.gamma = p.get_number("gamma");
-    g.units = p.get_name("units") == "U_deg" ? AngleUnits::degrees : AngleUnits::radians;
+    g.compensator.tau_w = c.tau_w;
+    g.compensator.tau_mu = c.tau_mu;
+    g.compensator.sigma = c.sigma;
+    g.compensator.beta = c.beta;
+    g.compensator.gamma = c.gamma;
+    g.units = c.units == "U_deg" ? AngleUnits::degrees : AngleUnits::radians;
     g.period_s = T;
-    if (dropout_ && p.get_name("on_failure") == "hold_last") g.on_failure = FailurePolicy::hold_last;
+    if (dropout_ && c.on_failure == "hold_last") g.on_failure = FailurePolicy::hold_last;
     PpcParams<3> pp;
-    const Vec3 rho0 = d2r * p.get_vec<3>("rho0_deg"), rinf = d2r * p.get_vec<3>("rho_inf_deg");
-    const Vec3 k_rho = p.get_vec<3>("k_rho");
+    const Vec3 rho0 = d2r * c.rho0_deg, rinf = d2r * c.rho_inf_deg;
+    const Vec3 k_rho = c.k_rho;
     for (int i = 0; i < 3; ++i) pp.rho[i] = PerformanceFunction{rho0(i), rinf(i), k_rho(i)};
-    pp.delta = p.get_vec<3>("delta");
-    pp.robust_clamp = p.get_name("robust_clamp") == "on";
-    pp.recovery = p.get_name("funnel_recovery") == "reopen" ? FunnelRecovery::reopen : FunnelRecovery::none;
+    pp.delta = c.delta;
+    pp.robust_clamp = c.robust_clamp == "on";
+    pp.recovery = c.funnel_recovery == "reopen" ? FunnelRecovery::reopen : FunnelRecovery::none;
     std::optional<PpcNeural> ppc;
     std::optional<AdaptiveTracking> atc;
     if (ppc_) {
@@ -277,12 +302,12 @@ class FlexibleScenario final : public Scenario {
       if (atc->status() != Status::ok) throw ParamError("ATC parameters rejected (gains, period)");
     }
     // The funnel both laws are judged against (spec §B.6): branches from e(0), δ, ρ(t).
-    const Vec3 th0 = d2r * p.get_vec<3>("theta0_deg");
+    const Vec3 th0 = d2r * c.theta0_deg;
     PrescribedPerformance<3> funnel_at0(pp);
     const Vec3 e0 = th0 - ref.sample(0.0).angles;
     if (funnel_at0.init(e0) != Status::ok) throw ParamError("e(0) is outside the funnel: |e_i(0)| must be < rho0");
 
-    Plant::State x = Plant::initial_state(th0, d2r * p.get_vec<3>("thetadot0_deg_s"));
+    Plant::State x = Plant::initial_state(th0, d2r * c.thetadot0_deg_s);
 
     std::unique_ptr<CsvRecorder> csv;
     if (!ctx.csv_path.empty()) {
@@ -301,21 +326,21 @@ class FlexibleScenario final : public Scenario {
       cols.push_back({"W_hat_norm", "-"});
       if (overlay)
         for (const char* a : kAxis) cols.push_back({std::string("e_") + a + "_deg_nominal_gains", "deg"});
-      csv = std::make_unique<CsvRecorder>(ctx.csv_path, cols, static_cast<int>(p.get_number("record_every")));
+      csv = std::make_unique<CsvRecorder>(ctx.csv_path, cols, static_cast<int>(c.record_every));
     }
 
-    const Vec<2> window = p.get_vec<2>("window_s");
+    const Vec<2> window = c.window_s;
     const double rho_inf_half_deg = 0.5 * rinf.maxCoeff() / d2r;
     Vec3 err_ss = Vec3::Zero(), e_prev = e0, z_peak = Vec3::Constant(-INFINITY);
     double torque_peak = 0, torque_late = 0, eta_max = 0, eta_late = 0, margin_min = INFINITY;
     // P8 "no growth over [50, T]": max ||eta_1|| on the first and the second half of [50, T].
-    const double eta_mid = 50.0 + 0.5 * (p.get_number("duration_s") - 50.0);
+    const double eta_mid = 50.0 + 0.5 * (c.duration_s - 50.0);
     double eta_late1 = 0, eta_late2 = 0;
     double p3_dev = 0, mu_min = INFINITY;
     long violations = 0, crossings = 0, ctrl_flags = 0, nonok = 0;
     // Sensor dropout (flexible-fault-sensor-dropout only): ω measured as NaN on [t0, t1).
-    const double drop0 = dropout_ ? p.get_number("dropout_start_s") : INFINITY;
-    const double drop1 = dropout_ ? drop0 + p.get_number("dropout_duration_s") : INFINITY;
+    const double drop0 = dropout_ ? c.dropout_start_s : INFINITY;
+    const double drop1 = dropout_ ? drop0 + c.dropout_duration_s : INFINITY;
     if (dropout_ && !(drop0 >= 0.0 && drop1 >= drop0))
       throw ParamError("dropout_start_s and dropout_duration_s must be >= 0");
     StatusCounts statuses;
@@ -323,23 +348,31 @@ class FlexibleScenario final : public Scenario {
     double err_after_rad = 0.0;
     std::size_t sample = 0;
     Vec3 e_final = Vec3::Zero();
-    BodyTorque cmd;
     std::vector<double> row;
 
-    auto control = [&](double t, const Plant::State& xs, Vec3& u) {
-      EulerTrackingInput m;  // perfect measurements (Assumption 1, B.4 #4)
+    // The loop (sim/closed_loop.hpp): perfect sensors (Assumption 1, B.4 #4; NaN rate in the
+    // dropout) → the law → its torque on the body, with the disturbance (FlexibleSimPlant).
+    auto sensors = [&](double t, const Plant::State& xs) {
+      EulerTrackingInput m;
       m.t_s = t;
       m.state = AttitudeStateEuler123{Plant::angles(xs), Plant::omega_BN_B(xs)};
       if (t >= drop0 && t < drop1) m.state.omega_BN_B.setConstant(std::numeric_limits<double>::quiet_NaN());
       m.reference = ref.sample(t);
-      const Status s = ppc_ ? ppc->step(m, cmd) : atc->step(m, cmd);
-      statuses.add(s);
-      if (!all_finite(cmd.torque_B_Nm)) ++nonfinite_cmd;
-      if (s == Status::out_of_range || s == Status::constraint_violated) ++ctrl_flags;
-      if (s != Status::ok) ++nonok;
-      u = cmd.torque_B_Nm;
+      return m;
     };
-    auto observe = [&](double t, const Plant::State& xs, const Vec3& u) {
+    auto to_actuation = [](double, const Plant::State&, const BodyTorque& cmd) { return cmd; };
+    auto to_plant = [](double, const Plant::State&, const BodyTorque& cmd, Vec3& u) { u = cmd.torque_B_Nm; };
+    auto observe = [&](const auto& s) {
+      const double t = s.t_s;
+      const Plant::State& xs = s.x;
+      const Vec3& u = s.u;
+      if (!s.final) {  // once per control step
+        statuses.add(s.controller_status);
+        if (!all_finite(s.command.torque_B_Nm)) ++nonfinite_cmd;
+        if (s.controller_status == Status::out_of_range || s.controller_status == Status::constraint_violated)
+          ++ctrl_flags;
+        if (s.controller_status != Status::ok) ++nonok;
+      }
       if (!(std::abs(Plant::angles(xs)(1)) < 89.0 * d2r))  // spec §B.2 guard: F is singular at 90°
         throw SimError("closed loop diverged: |pitch| reached 89 deg at t = " + format_number(t) +
                        " s (is control_period_s too long for this law? see the sample-rate study)");
@@ -396,15 +429,21 @@ class FlexibleScenario final : public Scenario {
         if (overlay)
           for (int i = 0; i < 3; ++i)
             row.push_back(sample < overlay->e[i].size() ? overlay->e[i][sample] : NAN);
-        if (t == p.get_number("duration_s")) csv->record_final(row.data()); else csv->record(row.data());
+        csv->record_row(row, s.final);
       }
       ++sample;
     };
     SampledDataOptions opt;
-    opt.t_end = p.get_number("duration_s");
+    opt.t_end = c.duration_s;
     opt.sample_period = T;
-    Rk4Integrator<FlexibleSimPlant> integ(sim, std::min(T, p.get_number("plant_step_max_s")));
-    run_sampled_data(sim, integ, x, opt, control, observe);
+    IntegratorChoice ic;  // RK4 (spec §B.5), at most plant_step_max_s per sub-step
+    ic.kind = IntegratorChoice::Kind::rk4;
+    ic.rk4_step_s = std::min(T, c.plant_step_max_s);
+    PassThrough<BodyTorque> torque_input;  // the plant takes the body torque itself
+    if (ppc_)
+      closed_loop(sim, x, opt, ic, sensors, *ppc, to_actuation, torque_input, to_plant, observe);
+    else
+      closed_loop(sim, x, opt, ic, sensors, *atc, to_actuation, torque_input, to_plant, observe);
     if (csv) csv->close();
 
     RunResult r;
@@ -431,7 +470,7 @@ class FlexibleScenario final : public Scenario {
                  {"controller_flags", double(ctrl_flags)},
                  {"nonok_steps", double(nonok)}};
     if (dropout_) {
-      dropout_results(r, p, err_after_rad, violations_after, nonfinite_cmd, statuses, rinf.maxCoeff());
+      dropout_results(r, c, err_after_rad, violations_after, nonfinite_cmd, statuses, rinf.maxCoeff());
       return r;
     }
     // added for the paper verdicts (issue 16); the metrics above are unchanged

@@ -17,15 +17,15 @@
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/math/euler.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
+#include "scenarios/param_binding.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/truth_plants.hpp"
 #include "scenarios/status_counts.hpp"
 #include "scenarios/verdicts.hpp"
-#include "sim/cvode_integrator.hpp"
+#include "sim/closed_loop.hpp"
 #include "sim/metrics.hpp"
 #include "sim/random.hpp"
 #include "sim/recorder.hpp"
-#include "sim/rk4_integrator.hpp"
 #include "sim/sampled_data.hpp"
 
 namespace adcs::sim {
@@ -51,6 +51,102 @@ enum class Variant {
   paper,       //!< the spec's choices for what the paper omits (A-REF / A-BIAS)
   projection,  //!< alpha_G raised until the smooth projection acts (R7 with teeth)
   calibrated,  //!< the paper's unreported J, h_cw, deviation and bias from tools/calibrate-seed001.py
+};
+
+//! Every parameter of the seed-001 scenarios, declared once (scenarios/param_binding.hpp). The
+//! first five members are not parameters: they are the scenario's variant, which chooses the
+//! list and its defaults.
+struct HybridConfig {
+  bool adaptive = true, bias = false, flight_rate = false;
+  Fault fault = Fault::none;
+  Variant variant = Variant::paper;
+
+  double duration_s = 0, fault_time_s = 0, fault_actuator = 0, fdir_delay_s = 0, control_period_s = 0;
+  std::string fdir, deviation, integrator, initial_estimates, adaptation_step, H_I_n, baseline;
+  Vec3 J_s_diag_kgm2 = Vec3::Zero(), I_c_sgt_kgm2 = Vec3::Zero(), tau_ext_Nm = Vec3::Zero();
+  Vec3 Kp_diag = Vec3::Zero(), Kd_diag = Vec3::Zero();
+  double h_cw_Nms = 0, I_wws_kgm2 = 0, deviation_seed = 0, deviation_max = 0, deviation_rot_max_rad = 0;
+  double gimbal_rate_max_rad_s = 0, wheel_accel_max_rad_s2 = 0, alpha_F = 0, alpha_G = 0, beta_G = 0, delta_G = 0;
+  double Omega_w0_rad_s = 0, record_every = 0, max_step_gain = 0;
+  Vec<2> window_s = Vec<2>::Zero();
+
+  template <class F>
+  void visit(F&& f) {
+    if (fault != Fault::none) {
+      f.number("duration_s", duration_s, 300.0, "s", "ours: 100 s before the fault, 200 s after");
+      f.number("fault_time_s", fault_time_s, 100.0, "s", "issue 7: the actuator fails at t = 100 s");
+      f.number("fault_actuator", fault_actuator, 1, "-",
+               fault == Fault::stuck_gimbal ? "ours: which gimbal freezes (1..4)" : "ours: which wheel is lost (1..3)");
+      f.number("fdir_delay_s", fdir_delay_s, 0.1, "s", "assumed (ours): time from the fault to the FDIR report");
+      f.name("fdir", fdir, "mask", {"mask", "none"},
+             "mask: the controller is told and steers over the remaining actuators; none: it is not told");
+    } else {
+      f.number("duration_s", duration_s, 800.0, "s", std::string(kA5) + ": one period of the slowest ω_f");
+    }
+    if (flight_rate)
+      f.number("control_period_s", control_period_s, 0.1, "s", "ours: a flight rate, 10 Hz (the paper's law needs <= 3 ms)");
+    else
+      f.number("control_period_s", control_period_s, 1e-3, "s", std::string(kA5) + ": T_c = 1 ms (≥ 5 ms unstable)");
+    // The calibrated variant's values are the best point of tools/calibrate-seed001.py's grid
+    // (docs/data/seed001-calibration-grid.csv): the non-adaptive baseline closest to the paper's
+    // R1/R2 orders (0.3 rad, 1e-3 rad/s) within what the paper states. Gains are never changed.
+    const bool cal = variant == Variant::calibrated;
+    constexpr const char* kCal = "issue 16 calibration (tools/calibrate-seed001.py, best grid point)";
+    if (cal)
+      f.vec("J_s_diag_kgm2", J_s_diag_kgm2, Vec3(30.0, 25.0, 20.0), "kg m^2", std::string(kCal) + ": 0.25 x A-REF's body inertia");
+    else
+      f.vec("J_s_diag_kgm2", J_s_diag_kgm2, Vec3(120.0, 100.0, 80.0), "kg m^2", std::string(kA5) + ": body inertia");
+    f.number("h_cw_Nms", h_cw_Nms, cal ? 40.0 : 10.0, "N m s", cal ? std::string(kCal) : std::string(kA5) + ": CMG rotor momentum");
+    f.number("I_wws_kgm2", I_wws_kgm2, 0.02, "kg m^2", std::string(kA5) + ": wheel spin inertia");
+    f.vec("I_c_sgt_kgm2", I_c_sgt_kgm2, Vec3(0.012, 0.006, 0.01), "kg m^2",
+          std::string(kA5) + ": CMG gimbal+rotor inertia about s, t, g");
+    f.name("deviation", deviation, cal ? "random" : "D1", {"D1", "none", "random", "rigid"},
+           (cal ? std::string(kCal) + ": a Mode-A draw (deviation_seed); " : std::string(kA5) + ": ") +
+               "D1 fixed set (with --seed N > 0: a Mode-A set drawn from N, our "
+               "portable generator); random = always drawn (Mode A); rigid = Mode B, each actuator "
+               "rotated by a drawn rotation vector; none = truth equals nominal");
+    f.number("deviation_seed", deviation_seed, cal ? 1.0 : 0.0, "-",
+             cal ? std::string(kCal) + ": the Mode-A draw of --seed 1"
+                 : "ours: the generator seed of random/rigid draws when --seed is 0");
+    f.number("deviation_max", deviation_max, 0.05, "-", "seed 001 §4: ±0.05 per element (Mode A)");
+    f.number("deviation_rot_max_rad", deviation_rot_max_rad, 0.05, "rad", "spec A.2.3 Mode B: φ ~ U[−0.05, 0.05]³ rad");
+    f.vec("tau_ext_Nm", tau_ext_Nm, Vec3::Zero(), "N m",
+          "spec A.5: 0 (paper); robustness case 1e-5 per axis, body components, constant");
+    f.number("gimbal_rate_max_rad_s", gimbal_rate_max_rad_s, 0.0, "rad/s",
+             "spec A.5: none (0) in the baseline; optional 1 rad/s, per gimbal, flagged if hit");
+    f.number("wheel_accel_max_rad_s2", wheel_accel_max_rad_s2, 0.0, "rad/s^2",
+             "spec A.5: none (0) in the baseline; optional 50 rad/s^2, per wheel, flagged if hit");
+    f.number("alpha_F", alpha_F, adaptive ? 1.0e7 : 0.0, "-", kPaper);
+    if (variant == Variant::projection)  // 1e5 x the paper's: max |Θ̂_G|² 0.148, in (β, β + δ)
+      f.number("alpha_G", alpha_G, 1.0e8, "-", "ours: raised from seed 001's 1e3 until the projection acts (issue 16, R7)");
+    else
+      f.number("alpha_G", alpha_G, adaptive ? 1.0e3 : 0.0, "-", kPaper);
+    f.number("beta_G", beta_G, 0.05, "-", kPaper);
+    f.number("delta_G", delta_G, 0.1, "-", kPaper);
+    f.vec("Kp_diag", Kp_diag, Vec3(0.08, 0.18, 0.12), "1/s^2", "spec §A.3 (eig listed in seed 001 §4)");
+    f.vec("Kd_diag", Kd_diag, Vec3(0.4, 0.6, 0.5 * std::sqrt(2.0)), "1/s", "spec §A.3 (eig listed in seed 001 §4)");
+    f.number("Omega_w0_rad_s", Omega_w0_rad_s, bias || cal ? 150.0 : 0.0, "rad/s",
+             cal ? std::string(kCal) + ": A-BIAS's 150 rad/s wheel bias"
+                 : bias ? std::string("spec §A.5 A-BIAS: bias momentum on all wheels") : std::string(kA5));
+    f.name("H_I_n", H_I_n, bias || cal ? "zero" : "nominal", {"nominal", "zero"},
+           "controller's H_I^n: nominal model at t = 0, or zero (A-BIAS: unknown bias)");
+    if (fault != Fault::none)
+      f.vec("window_s", window_s, Vec<2>(50.0, 100.0), "s", "ours: steady window before the fault");
+    else
+      f.vec("window_s", window_s, Vec<2>(200.0, 800.0), "s", std::string(kA5) + ": steady-state window");
+    f.name("integrator", integrator, "rk4", {"rk4", "adams"},
+           "rk4: one RK4 step per control period (spec §A.5); adams: CVODE Adams");
+    f.number("record_every", record_every, flight_rate ? 1 : 100, "samples", "CSV decimation (in control samples)");
+    f.name("initial_estimates", initial_estimates, "zero", {"zero", "truth"},
+           "spec §A.5: Θ̂(0) = 0; truth = oracle check S11 (Θ̂ set to the true deviations)");
+    f.name("adaptation_step", adaptation_step, flight_rate ? "normalized" : "explicit_euler", {"explicit_euler", "normalized"},
+           "explicit_euler: the paper's estimate update (spec A.3 step 13); normalized: ours, "
+           "keeps the per-step adaptation gain below max_step_gain (stable at 10 Hz)");
+    f.number("max_step_gain", max_step_gain, 0.2, "-", "ours: lambda_max of the normalized step");
+    if (adaptive && fault == Fault::none)
+      f.name("baseline", baseline, "run", {"run", "skip"},
+             "run: also simulate alpha_F = alpha_G = 0 for the R5 improvement ratio");
+  }
 };
 
 class HybridScenario final : public Scenario {
@@ -81,86 +177,11 @@ class HybridScenario final : public Scenario {
                                               : "");
   }
 
-  void declare(ParamSet& p) const override {
-    if (fault_ != Fault::none) {
-      p.number("duration_s", 300.0, "s", "ours: 100 s before the fault, 200 s after");
-      p.number("fault_time_s", 100.0, "s", "issue 7: the actuator fails at t = 100 s");
-      p.number("fault_actuator", 1, "-",
-               fault_ == Fault::stuck_gimbal ? "ours: which gimbal freezes (1..4)" : "ours: which wheel is lost (1..3)");
-      p.number("fdir_delay_s", 0.1, "s", "assumed (ours): time from the fault to the FDIR report");
-      p.name("fdir", "mask", {"mask", "none"},
-             "mask: the controller is told and steers over the remaining actuators; none: it is not told");
-    } else {
-      p.number("duration_s", 800.0, "s", std::string(kA5) + ": one period of the slowest ω_f");
-    }
-    if (flight_rate_)
-      p.number("control_period_s", 0.1, "s", "ours: a flight rate, 10 Hz (the paper's law needs <= 3 ms)");
-    else
-      p.number("control_period_s", 1e-3, "s", std::string(kA5) + ": T_c = 1 ms (≥ 5 ms unstable)");
-    // The calibrated variant's values are the best point of tools/calibrate-seed001.py's grid
-    // (docs/data/seed001-calibration-grid.csv): the non-adaptive baseline closest to the paper's
-    // R1/R2 orders (0.3 rad, 1e-3 rad/s) within what the paper states. Gains are never changed.
-    const bool cal = variant_ == Variant::calibrated;
-    constexpr const char* kCal = "issue 16 calibration (tools/calibrate-seed001.py, best grid point)";
-    if (cal)
-      p.vector("J_s_diag_kgm2", {30.0, 25.0, 20.0}, "kg m^2", std::string(kCal) + ": 0.25 x A-REF's body inertia");
-    else
-      p.vector("J_s_diag_kgm2", {120.0, 100.0, 80.0}, "kg m^2", std::string(kA5) + ": body inertia");
-    p.number("h_cw_Nms", cal ? 40.0 : 10.0, "N m s", cal ? std::string(kCal) : std::string(kA5) + ": CMG rotor momentum");
-    p.number("I_wws_kgm2", 0.02, "kg m^2", std::string(kA5) + ": wheel spin inertia");
-    p.vector("I_c_sgt_kgm2", {0.012, 0.006, 0.01}, "kg m^2",
-             std::string(kA5) + ": CMG gimbal+rotor inertia about s, t, g");
-    p.name("deviation", cal ? "random" : "D1", {"D1", "none", "random", "rigid"},
-           (cal ? std::string(kCal) + ": a Mode-A draw (deviation_seed); " : std::string(kA5) + ": ") +
-               "D1 fixed set (with --seed N > 0: a Mode-A set drawn from N, our "
-               "portable generator); random = always drawn (Mode A); rigid = Mode B, each actuator "
-               "rotated by a drawn rotation vector; none = truth equals nominal");
-    p.number("deviation_seed", cal ? 1.0 : 0.0, "-",
-             cal ? std::string(kCal) + ": the Mode-A draw of --seed 1"
-                 : "ours: the generator seed of random/rigid draws when --seed is 0");
-    p.number("deviation_max", 0.05, "-", "seed 001 §4: ±0.05 per element (Mode A)");
-    p.number("deviation_rot_max_rad", 0.05, "rad", "spec A.2.3 Mode B: φ ~ U[−0.05, 0.05]³ rad");
-    p.vector("tau_ext_Nm", {0.0, 0.0, 0.0}, "N m",
-             "spec A.5: 0 (paper); robustness case 1e-5 per axis, body components, constant");
-    p.number("gimbal_rate_max_rad_s", 0.0, "rad/s",
-             "spec A.5: none (0) in the baseline; optional 1 rad/s, per gimbal, flagged if hit");
-    p.number("wheel_accel_max_rad_s2", 0.0, "rad/s^2",
-             "spec A.5: none (0) in the baseline; optional 50 rad/s^2, per wheel, flagged if hit");
-    p.number("alpha_F", adaptive_ ? 1.0e7 : 0.0, "-", kPaper);
-    if (variant_ == Variant::projection)  // 1e5 x the paper's: max |Θ̂_G|² 0.148, in (β, β + δ)
-      p.number("alpha_G", 1.0e8, "-", "ours: raised from seed 001's 1e3 until the projection acts (issue 16, R7)");
-    else
-      p.number("alpha_G", adaptive_ ? 1.0e3 : 0.0, "-", kPaper);
-    p.number("beta_G", 0.05, "-", kPaper);
-    p.number("delta_G", 0.1, "-", kPaper);
-    p.vector("Kp_diag", {0.08, 0.18, 0.12}, "1/s^2", "spec §A.3 (eig listed in seed 001 §4)");
-    p.vector("Kd_diag", {0.4, 0.6, 0.5 * std::sqrt(2.0)}, "1/s", "spec §A.3 (eig listed in seed 001 §4)");
-    p.number("Omega_w0_rad_s", bias_ || cal ? 150.0 : 0.0, "rad/s",
-             cal ? std::string(kCal) + ": A-BIAS's 150 rad/s wheel bias"
-                 : bias_ ? std::string("spec §A.5 A-BIAS: bias momentum on all wheels") : std::string(kA5));
-    p.name("H_I_n", bias_ || cal ? "zero" : "nominal", {"nominal", "zero"},
-           "controller's H_I^n: nominal model at t = 0, or zero (A-BIAS: unknown bias)");
-    if (fault_ != Fault::none)
-      p.vector("window_s", {50.0, 100.0}, "s", "ours: steady window before the fault");
-    else
-      p.vector("window_s", {200.0, 800.0}, "s", std::string(kA5) + ": steady-state window");
-    p.name("integrator", "rk4", {"rk4", "adams"},
-           "rk4: one RK4 step per control period (spec §A.5); adams: CVODE Adams");
-    p.number("record_every", flight_rate_ ? 1 : 100, "samples", "CSV decimation (in control samples)");
-    p.name("initial_estimates", "zero", {"zero", "truth"},
-           "spec §A.5: Θ̂(0) = 0; truth = oracle check S11 (Θ̂ set to the true deviations)");
-    p.name("adaptation_step", flight_rate_ ? "normalized" : "explicit_euler", {"explicit_euler", "normalized"},
-           "explicit_euler: the paper's estimate update (spec A.3 step 13); normalized: ours, "
-           "keeps the per-step adaptation gain below max_step_gain (stable at 10 Hz)");
-    p.number("max_step_gain", 0.2, "-", "ours: lambda_max of the normalized step");
-    if (adaptive_ && fault_ == Fault::none)
-      p.name("baseline", "run", {"run", "skip"},
-             "run: also simulate alpha_F = alpha_G = 0 for the R5 improvement ratio");
-  }
+  void declare(ParamSet& p) const override { declare_config(p, prototype()); }
 
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
-    const bool with_baseline = adaptive_ && fault_ == Fault::none && p.get_name("baseline") == "run" &&
-                               p.get_number("alpha_F") + p.get_number("alpha_G") > 0.0;
+    const HybridConfig c = read_config(p, prototype());
+    const bool with_baseline = adaptive_ && fault_ == Fault::none && c.baseline == "run" && c.alpha_F + c.alpha_G > 0.0;
     if (!with_baseline) return simulate(p, ctx, nullptr, nullptr);
     // R5 needs the same configuration without adaptation: run it first (no CSV), keep its error
     // trace for the overlay plots, then take the ratios.
@@ -223,26 +244,37 @@ class HybridScenario final : public Scenario {
   }
 
  private:
+  HybridConfig prototype() const {
+    HybridConfig c;
+    c.adaptive = adaptive_;
+    c.bias = bias_;
+    c.flight_rate = flight_rate_;
+    c.fault = fault_;
+    c.variant = variant_;
+    return c;
+  }
+
   //! One closed-loop run. `overlay` (optional) adds the no-adaptation errors as CSV columns;
   //! `capture` (optional) stores this run's per-sample errors for such an overlay.
   RunResult simulate(const ParamSet& p, const RunContext& ctx, const BaselineTrace* overlay,
                      BaselineTrace* capture) const {
+    const HybridConfig c = read_config(p, prototype());
     // --- configuration (spec §A.5) ---
     VscmgGeometry<kM, kN> nominal = pyramid_4cmg_3rw_nominal();
-    nominal.J_s = p.get_vec<3>("J_s_diag_kgm2").asDiagonal();
-    nominal.h_cw.setConstant(p.get_number("h_cw_Nms"));
-    nominal.I_wws.setConstant(p.get_number("I_wws_kgm2"));
-    const Vec3 Ic = p.get_vec<3>("I_c_sgt_kgm2");
+    nominal.J_s = c.J_s_diag_kgm2.asDiagonal();
+    nominal.h_cw.setConstant(c.h_cw_Nms);
+    nominal.I_wws.setConstant(c.I_wws_kgm2);
+    const Vec3& Ic = c.I_c_sgt_kgm2;
     nominal.I_cs.setConstant(Ic(0));
     nominal.I_ct.setConstant(Ic(1));
     nominal.I_cg.setConstant(Ic(2));
     VscmgDeviation<kM, kN> dev;
-    const std::string mode = p.get_name("deviation");
+    const std::string& mode = c.deviation;
     // Every value drawn from --seed, and what it derives, goes to the run's JSON (issue 15).
     std::vector<UsedValue> used;
     // The draw's generator seed: --seed, or deviation_seed when --seed is 0 (checked before the
     // conversion: a negative or NaN double has no uint64 value).
-    const double deviation_seed = p.get_number("deviation_seed");
+    const double deviation_seed = c.deviation_seed;
     if (!(deviation_seed >= 0.0 && deviation_seed < 1.8e19)) throw ParamError("deviation_seed must be in [0, 1.8e19)");
     const std::uint64_t draw_seed = ctx.seed != 0 ? ctx.seed : static_cast<std::uint64_t>(deviation_seed);
     const std::string from =
@@ -255,7 +287,7 @@ class HybridScenario final : public Scenario {
     };
     if (mode == "random" || (mode == "D1" && ctx.seed != 0)) {  // --seed N > 0 draws Mode A
       Rng rng(draw_seed);
-      const double a = p.get_number("deviation_max");
+      const double a = c.deviation_max;
       auto draw = [&](auto& m) {
         for (int j = 0; j < m.cols(); ++j)
           for (int i = 0; i < m.rows(); ++i) m(i, j) = rng.uniform(-a, a);
@@ -268,7 +300,7 @@ class HybridScenario final : public Scenario {
       record_deviation(from + "uniform in +-deviation_max per entry (spec A.2.3 Mode A)");
     } else if (mode == "rigid") {  // Mode B (spec A.2.3): one rotation vector per actuator
       Rng rng(draw_seed);
-      const double a = p.get_number("deviation_rot_max_rad");
+      const double a = c.deviation_rot_max_rad;
       Mat<3, kM> phi_c;
       Mat<3, kN> phi_w;
       for (int i = 0; i < kM; ++i)
@@ -288,39 +320,39 @@ class HybridScenario final : public Scenario {
     pp.truth = apply_deviation(nominal, dev);
     FullPlant plant(pp);
     if (plant.status() != Status::ok) throw ParamError("plant parameters are not physical");
-    const Vec3 tau_ext = p.get_vec<3>("tau_ext_Nm");
+    const Vec3 tau_ext = c.tau_ext_Nm;
     plant.set_external_torque(tau_ext);
     Vec<kM + kN> u_limit;  // 0 = no limit (saturate_each)
-    u_limit << Vec<kM>::Constant(p.get_number("gimbal_rate_max_rad_s")),
-        Vec<kN>::Constant(p.get_number("wheel_accel_max_rad_s2"));
+    u_limit << Vec<kM>::Constant(c.gimbal_rate_max_rad_s),
+        Vec<kN>::Constant(c.wheel_accel_max_rad_s2);
     if (!(u_limit.array() >= 0.0).all()) throw ParamError("actuator limits must be >= 0 (0 = none)");
 
-    const double T = p.get_number("control_period_s");
+    const double T = c.control_period_s;
     Controller::Params cp;
     cp.nominal = nominal;
-    cp.alpha_F = p.get_number("alpha_F");
-    cp.alpha_G = p.get_number("alpha_G");
-    cp.beta_G = p.get_number("beta_G");
-    cp.delta_G = p.get_number("delta_G");
+    cp.alpha_F = c.alpha_F;
+    cp.alpha_G = c.alpha_G;
+    cp.beta_G = c.beta_G;
+    cp.delta_G = c.delta_G;
     cp.period_s = T;
-    cp.adaptation_step = p.get_name("adaptation_step") == "normalized" ? AdaptationStep::normalized
+    cp.adaptation_step = c.adaptation_step == "normalized" ? AdaptationStep::normalized
                                                                        : AdaptationStep::explicit_euler;
-    cp.max_step_gain = p.get_number("max_step_gain");
-    const Vec3 kp = p.get_vec<3>("Kp_diag"), kd = p.get_vec<3>("Kd_diag");
+    cp.max_step_gain = c.max_step_gain;
+    const Vec3 kp = c.Kp_diag, kd = c.Kd_diag;
     for (int i = 0; i < 3; ++i) {  // s² + kd s + kp = 0 per axis
       const std::complex<double> disc = std::sqrt(std::complex<double>(kd(i) * kd(i) - 4 * kp(i)));
       cp.poles[i] = {{(-kd(i) + disc) / 2.0, (-kd(i) - disc) / 2.0}};
     }
     // Initial state: σ = σ_d = 0, ω = 0, γ = 0, Ω_w = Omega_w0 (spec §A.4 #24, §A.5).
-    const Vec3 Omega0 = Vec3::Constant(p.get_number("Omega_w0_rad_s"));
+    const Vec3 Omega0 = Vec3::Constant(c.Omega_w0_rad_s);
     const FullPlant::State x0p = plant.initial_state(Vec3::Zero(), Vec3::Zero(), Vec<kM>::Zero(), Omega0);
     const Vec3 H_true = plant.momentum_N(x0p);
     // H_I^n from the nominal model at t = 0 (σ = 0, ω = 0, γ = 0).
     const Vec3 H_n_model = nominal.internal_momentum(Vec<kM>::Zero(), Vec<kM>::Zero(), Omega0);
-    cp.H_I_n = p.get_name("H_I_n") == "zero" ? Vec3::Zero() : H_n_model;
+    cp.H_I_n = c.H_I_n == "zero" ? Vec3::Zero() : H_n_model;
     Controller ctrl(cp);
     if (ctrl.status() != Status::ok) throw ParamError("controller parameters rejected (alpha, beta, delta, gains)");
-    if (p.get_name("initial_estimates") == "truth") {  // spec §A.7 S11: the oracle controller
+    if (c.initial_estimates == "truth") {  // spec §A.7 S11: the oracle controller
       Mat<6, kM> th_c;
       Mat<3, kN> th_w;
       for (int i = 0; i < kM; ++i) th_c.col(i) = dev.theta_cG(i);
@@ -351,10 +383,10 @@ class HybridScenario final : public Scenario {
         cols.push_back({"principal_err_nonadaptive", "rad"});
         cols.push_back({"rate_err_nonadaptive", "rad/s"});
       }
-      csv = std::make_unique<CsvRecorder>(ctx.csv_path, cols, static_cast<int>(p.get_number("record_every")));
+      csv = std::make_unique<CsvRecorder>(ctx.csv_path, cols, static_cast<int>(c.record_every));
     }
 
-    const Vec<2> window = p.get_vec<2>("window_s");
+    const Vec<2> window = c.window_s;
     double e_att_max = 0, e_p_max = 0, e_rate_max = 0, proj_max = 0, sigma_min = INFINITY;
     double gimbal_max = 0, wheel_max = 0, drift_max = 0, E_H_final = NAN, E_H0 = NAN, E_H_late_max = 0;
     long nonok = 0, limit_hits = 0;
@@ -363,8 +395,6 @@ class HybridScenario final : public Scenario {
     Vec3 H_expected = H_true;           // H(0) + ∫ Cᵀ τ_ext dt (trapezoid at the samples)
     Vec3 torque_N_prev = Vec3::Zero();  // Cᵀ τ_ext at the previous sample
     double t_prev = 0.0;
-    Controller::Output cmd;
-    Controller::Diagnostics diag;
     std::vector<double> row;
     const SinusoidalRateReference& ref = sim.ref;
 
@@ -374,46 +404,57 @@ class HybridScenario final : public Scenario {
     double t_fault = INFINITY, t_fdir = INFINITY;
     int k_fail = -1;
     if (faulty) {
-      const double a = p.get_number("fault_actuator");
+      const double a = c.fault_actuator;
       const int count = fault_ == Fault::stuck_gimbal ? kM : kN;
       if (!(a >= 1 && a <= count) || a != std::floor(a))
         throw ParamError("fault_actuator must be an integer in 1.." + std::to_string(count));
       k_fail = (fault_ == Fault::stuck_gimbal ? 0 : kM) + static_cast<int>(a) - 1;
-      t_fault = p.get_number("fault_time_s");
-      const double delay = p.get_number("fdir_delay_s");
+      t_fault = c.fault_time_s;
+      const double delay = c.fdir_delay_s;
       if (!(t_fault >= 0.0) || !(delay >= 0.0)) throw ParamError("fault_time_s and fdir_delay_s must be >= 0");
-      if (p.get_name("fdir") == "mask") t_fdir = t_fault + delay;
+      if (c.fdir == "mask") t_fdir = t_fault + delay;
     }
     bool fdir_applied = false;
     StatusCounts statuses;
     long nonfinite_cmd = 0;
     double failed_cmd_after_fdir = 0.0, e_p_after = 0.0, e_rate_after = 0.0, e_p_pre = 0.0;
 
-    auto control = [&](double t, const HybridSimPlant::State& xs, HybridSimPlant::Input& u) {
+    // The loop (sim/closed_loop.hpp): perfect sensors (spec §A.5) → the law, which steers its
+    // own actuators (PassThrough) → optional limits and the failed actuator → the truth plant.
+    auto sensors = [&](double t, const HybridSimPlant::State& xs, const HybridSimPlant::Input& u_held) {
       const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
-      Controller::Input m;  // perfect measurements (spec §A.5)
-      m.state.sigma_BN = FullPlant::sigma_BN(xp);
-      m.state.omega_BN_B = plant.omega_BN_B(xp, u);  // ω with the γ̇ held over the last period
-      m.actuators.gamma_rad = FullPlant::gamma(xp);
-      m.actuators.Omega_rad_s = FullPlant::Omega_w(xp);
-      if (faulty && !fdir_applied && t >= t_fdir) {
+      if (faulty && !fdir_applied && t >= t_fdir) {  // the FDIR report reaches the controller
         if (ctrl.set_available(all_actuators<kM + kN>() & ~(ActuatorMask{1} << k_fail)) != Status::ok)
           throw SimError("hybrid fault: actuator mask rejected");
         fdir_applied = true;
       }
+      Controller::Input m;
+      m.state.sigma_BN = FullPlant::sigma_BN(xp);
+      m.state.omega_BN_B = plant.omega_BN_B(xp, u_held);  // ω with the γ̇ held over the last period
+      m.actuators.gamma_rad = FullPlant::gamma(xp);
+      m.actuators.Omega_rad_s = FullPlant::Omega_w(xp);
       m.reference = ref.sample(t, xs.tail<3>());
-      const Status s = ctrl.step(m, cmd, &diag);
-      if (s != Status::ok) ++nonok;
-      statuses.add(s);
+      return m;
+    };
+    auto to_actuation = [](double, const HybridSimPlant::State&, const Controller::Output& cmd) { return cmd; };
+    auto to_plant = [&](double t, const HybridSimPlant::State&, const Controller::Output& cmd, HybridSimPlant::Input& u) {
       u = cmd.stacked();
-      if (!all_finite(u)) ++nonfinite_cmd;
-      if (fdir_applied) failed_cmd_after_fdir = std::max(failed_cmd_after_fdir, std::abs(u(k_fail)));
-      gimbal_rate_peak = std::max(gimbal_rate_peak, cmd.gamma_dot_rad_s.cwiseAbs().maxCoeff());
-      wheel_accel_peak = std::max(wheel_accel_peak, cmd.Omega_dot_rad_s2.cwiseAbs().maxCoeff());
       if (saturate_each<kM + kN>(u, u_limit) > 0) ++limit_hits;  // spec A.5: flag if hit
       if (t >= t_fault) u(k_fail) = 0.0;  // frozen gimbal (γ̇ = 0) / lost wheel (no torque)
     };
-    auto observe = [&](double t, const HybridSimPlant::State& xs, const HybridSimPlant::Input& u) {
+    auto observe = [&](const auto& s) {
+      const double t = s.t_s;
+      const HybridSimPlant::State& xs = s.x;
+      const HybridSimPlant::Input& u = s.u;
+      if (!s.final) {  // once per control step
+        if (s.controller_status != Status::ok) ++nonok;
+        statuses.add(s.controller_status);
+        const Vec<kM + kN> commanded = s.command.stacked();
+        if (!all_finite(commanded)) ++nonfinite_cmd;
+        if (fdir_applied) failed_cmd_after_fdir = std::max(failed_cmd_after_fdir, std::abs(commanded(k_fail)));
+        gimbal_rate_peak = std::max(gimbal_rate_peak, s.command.gamma_dot_rad_s.cwiseAbs().maxCoeff());
+        wheel_accel_peak = std::max(wheel_accel_peak, s.command.Omega_dot_rad_s2.cwiseAbs().maxCoeff());
+      }
       const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
       const Vec3 sigma = FullPlant::sigma_BN(xp);
       const Mat3 C_e = mrp_to_dcm(sigma) * mrp_to_dcm(xs.tail<3>()).transpose();  // spec §A.4 #23
@@ -444,7 +485,8 @@ class HybridScenario final : public Scenario {
       E_H_final = E_H;
       for (int i = 0; i < kM; ++i) proj_max = std::max(proj_max, ctrl.theta_cG(i).squaredNorm());
       for (int j = 0; j < kN; ++j) proj_max = std::max(proj_max, ctrl.theta_wG(j).squaredNorm());
-      if (t > 0.0) sigma_min = std::min(sigma_min, diag.steering.pinv.sigma_min);
+      const double pinv_sigma_min = s.controller_diagnostics.steering.pinv.sigma_min;
+      if (t > 0.0) sigma_min = std::min(sigma_min, pinv_sigma_min);
       gimbal_max = std::max(gimbal_max, FullPlant::gamma(xp).cwiseAbs().maxCoeff());
       wheel_max = std::max(wheel_max, (FullPlant::Omega_w(xp) - Omega0).cwiseAbs().maxCoeff());
       drift_max = std::max(drift_max, (H_now - H_expected).norm());
@@ -461,29 +503,24 @@ class HybridScenario final : public Scenario {
         for (int k = 0; k < 3; ++k) row.push_back(H_now(k));
         for (int i = 0; i < kM; ++i) row.push_back(ctrl.theta_cG(i).squaredNorm());
         for (int j = 0; j < kN; ++j) row.push_back(ctrl.theta_wG(j).squaredNorm());
-        row.push_back(diag.steering.pinv.sigma_min);
+        row.push_back(pinv_sigma_min);
         if (overlay) {
           const bool have = sample < overlay->principal_err.size();
           row.push_back(have ? overlay->principal_err[sample] : NAN);
           row.push_back(have ? overlay->rate_err[sample] : NAN);
         }
-        if (t == p.get_number("duration_s")) csv->record_final(row.data()); else csv->record(row.data());
+        csv->record_row(row, s.final);
       }
       ++sample;
     };
     SampledDataOptions opt;
-    opt.t_end = p.get_number("duration_s");
+    opt.t_end = c.duration_s;
     opt.sample_period = T;
-    if (p.get_name("integrator") == "rk4") {
-      Rk4Integrator<HybridSimPlant> integ(sim, T);
-      run_sampled_data(sim, integ, x, opt, control, observe);
-    } else {
-      CvodeOptions co;
-      co.rtol = 1e-10;
-      co.atol = 1e-12;
-      CvodeIntegrator<HybridSimPlant> integ(sim, co);
-      run_sampled_data(sim, integ, x, opt, control, observe);
-    }
+    IntegratorChoice ic;  // rk4: one RK4 step per control period (spec §A.5); adams: CVODE 1e-10 / 1e-12
+    ic.kind = c.integrator == "rk4" ? IntegratorChoice::Kind::rk4 : IntegratorChoice::Kind::adams;
+    ic.rk4_step_s = T;
+    PassThrough<Controller::Output> actuation;
+    closed_loop(sim, x, opt, ic, sensors, ctrl, to_actuation, actuation, to_plant, observe);
     if (csv) csv->close();
 
     RunResult r;
@@ -505,7 +542,7 @@ class HybridScenario final : public Scenario {
                  {"wheel_accel_peak_rad_s2", wheel_accel_peak},
                  {"actuator_limit_hits", double(limit_hits)}};
     if (faulty) {
-      fault_results(r, p, k_fail, e_p_pre, e_p_after, e_rate_after, failed_cmd_after_fdir, nonfinite_cmd,
+      fault_results(r, c.fdir == "mask", k_fail, e_p_pre, e_p_after, e_rate_after, failed_cmd_after_fdir, nonfinite_cmd,
                     statuses);
       return r;
     }
@@ -513,7 +550,7 @@ class HybridScenario final : public Scenario {
       r.claims.push_back({"check", "actuator limits (optional, spec A.5) never reached",
                           "0 samples clipped (PROTO peaks 3.1e-3 rad/s, 8e-6 rad/s^2)",
                           std::to_string(limit_hits) + " samples clipped", limit_hits == 0});
-    add_claims(r, p.get_number("beta_G"), e_att_max, e_p_max, e_rate_max, proj_max, ctrl.safeguard_count(), sigma_min, E_H0,
+    add_claims(r, c.beta_G, e_att_max, e_p_max, e_rate_max, proj_max, ctrl.safeguard_count(), sigma_min, E_H0,
                E_H_late_max, gimbal_max, wheel_max, variant_ == Variant::paper && mode == "D1" && ctx.seed == 0);
     const std::string n = name();
     r.plots = {
@@ -541,9 +578,8 @@ class HybridScenario final : public Scenario {
 
   //! Fault scenarios: bounded attitude after the fault, the failed actuator never commanded after
   //! the FDIR report, finite commands, and every step() status returned.
-  void fault_results(RunResult& r, const ParamSet& p, int k_fail, double e_pre, double e_after,
+  void fault_results(RunResult& r, bool fdir, int k_fail, double e_pre, double e_after,
                      double rate_after, double failed_cmd, long nonfinite_cmd, const StatusCounts& statuses) const {
-    const bool fdir = p.get_name("fdir") == "mask";
     r.metrics.push_back({"att_err_max_rad", e_after});
     r.metrics.push_back({"att_err_max_pre_fault_rad", e_pre});
     r.metrics.push_back({"rate_err_max_after_fault_rad_s", rate_after});

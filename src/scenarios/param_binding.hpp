@@ -13,6 +13,9 @@
 //   declare:  declare_config<Config>(params);          (Scenario::declare)
 //   run:      const Config c = read_config<Config>(params);   (Scenario::run)
 //
+// A Config may hold members that are not parameters but choose the list or the defaults (a
+// scenario's variant); pass a prototype with them set: declare_config(params, Config{variant}).
+//
 // so the key is spelled once and the field is the only place the value lives. (The default
 // is a non-deduced argument, so an Eigen expression such as Mat3::Identity() binds to it.)
 #include <string>
@@ -76,17 +79,18 @@ class ParamReader {
   const ParamSet& p_;
 };
 
+//! Declares every parameter Config::visit lists. `prototype` carries what is not a parameter
+//! but chooses the list or its defaults (a scenario's variant: which law, which vehicle).
 template <class Config>
-void declare_config(ParamSet& p) {
-  Config c{};
-  c.visit(ParamDeclarer{p});
+void declare_config(ParamSet& p, Config prototype = {}) {
+  prototype.visit(ParamDeclarer{p});
 }
 
+//! The parameters' values, read into a copy of `prototype` (see declare_config).
 template <class Config>
-Config read_config(const ParamSet& p) {
-  Config c{};
-  c.visit(ParamReader{p});
-  return c;
+Config read_config(const ParamSet& p, Config prototype = {}) {
+  prototype.visit(ParamReader{p});
+  return prototype;
 }
 
 }  // namespace adcs::sim

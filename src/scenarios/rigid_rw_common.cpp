@@ -73,6 +73,15 @@ ActuatorLimits<0, kRigidRwWheels> wheel_limits(const ParamSet& p) {
   return l;
 }
 
+void set_wheel_input(const ActuatorLimits<0, kRigidRwWheels>& limits, const RigidRwPlant::State& x,
+                     const WheelTorques<kRigidRwWheels>& w, RigidRwPlant::Input& u, long& speed_held) {
+  Vec<kRigidRwWheels> u_s = w.u_s_Nm;  // zero when the allocator refused (the wheels coast)
+  LimitReport lr;
+  if (limit_wheel_torques<kRigidRwWheels>(limits, RigidRwPlant::Omega(x), u_s, &lr) == Status::saturated)
+    speed_held += lr.wheel_speed_held;
+  u.head<kRigidRwWheels>() = u_s;
+}
+
 RigidRwPlant::Params rigid_rw_plant_params(const ParamSet& p) {
   RigidRwPlant::Params pp;
   pp.J_B = p.get_mat<3, 3>("J_kgm2");

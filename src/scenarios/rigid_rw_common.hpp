@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "adcs/actuator/limits.hpp"
+#include "adcs/core/signals.hpp"
 #include "adcs/plant/rigid_body_rw.hpp"
 #include "scenarios/scenario.hpp"
 #include "sim/closed_loop.hpp"
@@ -53,6 +54,12 @@ void declare_wheel_limits(ParamSet& p, double torque_limit_Nm, const std::string
 //! The declared wheel limits (actuator/limits.hpp); throws ParamError unless both are > 0.
 ActuatorLimits<0, kRigidRwWheels> wheel_limits(const ParamSet& p);
 
+//! The plant's wheel input from the allocated torques: each wheel's speed limit applied
+//! (actuator/limits.hpp; the torque limit is the allocator's), u's wheel part set, its external
+//! torque part left to the caller; wheels held at their speed limit are added to `speed_held`.
+void set_wheel_input(const ActuatorLimits<0, kRigidRwWheels>& limits, const RigidRwPlant::State& x,
+                     const WheelTorques<kRigidRwWheels>& w, RigidRwPlant::Input& u, long& speed_held);
+
 //! Plant parameters from the ParamSet; throws ParamError when they are not physical.
 RigidRwPlant::Params rigid_rw_plant_params(const ParamSet& p);
 
@@ -73,12 +80,5 @@ void rigid_rw_row(double t, const RigidRwPlant::State& x, std::vector<double>& r
 //! The integrator the parameters select ("integrator" adams / bdf / rk4, "rtol", "atol",
 //! "rk4_step_s", declared by declare_rigid_rw_plant): the one choice of sim/closed_loop.hpp.
 IntegratorChoice integrator_choice(const ParamSet& p);
-
-//! Calls `body(integrator)` with the integrator the parameters select. A generic lambda receives
-//! the concrete integrator type.
-template <class Body>
-void with_integrator(const RigidRwPlant& plant, const ParamSet& p, Body&& body) {
-  sim::with_integrator(plant, integrator_choice(p), std::forward<Body>(body));
-}
 
 }  // namespace adcs::sim

@@ -12,7 +12,7 @@
 #include "adcs/control/mrp_pd.hpp"
 #include "scenarios/rigid_rw_common.hpp"
 #include "sim/metrics.hpp"
-#include "sim/sampled_data.hpp"
+#include "sim/closed_loop.hpp"
 
 namespace adcs::sim {
 namespace {
@@ -115,7 +115,7 @@ class RigidRwMrpPd final : public Scenario {
     RwAllocationParams<kRigidRwWheels> ap;
     ap.G_s_B = pp.G_s_B;
     ap.torque_limit = p.get_number("torque_limit_Nm");
-    const RwTorqueAllocator<kRigidRwWheels> allocator(ap);
+    RwTorqueAllocator<kRigidRwWheels> allocator(ap);
     if (allocator.status() != Status::ok) throw ParamError("torque_limit_Nm must be > 0");
     const ActuatorLimits<0, kRigidRwWheels> limits = wheel_limits(p);
     AttitudeReference ref;
@@ -138,32 +138,36 @@ class RigidRwMrpPd final : public Scenario {
     std::vector<double> t_series, err_series, row;
     double torque_max = 0.0, wheel_max = 0.0, dH_max = 0.0;
     long saturated = 0, rejected = 0, samples = 0, speed_held = 0;
-    BodyTorque cmd;
-    Vec<kRigidRwWheels> u_s = Vec<kRigidRwWheels>::Zero();
     SampledDataOptions opt;
     opt.t_end = p.get_number("duration_s");
     opt.sample_period = p.get_number("control_period_s");
     const double t_end = opt.t_end;
 
-    auto control = [&](double, const RigidRwPlant::State& xs, RigidRwPlant::Input& u) {
-      MrpPd<kRigidRwWheels>::Input m;  // perfect measurements (assumed)
+    // The loop (sim/closed_loop.hpp): perfect sensors (assumed) → MRP PD → min-norm allocation
+    // with the torque limit → each wheel's speed limit → the plant's wheel motors.
+    auto sensors = [&](double, const RigidRwPlant::State& xs) {
+      MrpPd<kRigidRwWheels>::Input m;
       m.state = AttitudeState{RigidRwPlant::sigma_BN(xs), RigidRwPlant::omega_BN_B(xs)};
       m.Omega_rad_s = RigidRwPlant::Omega(xs);
       m.reference = ref;
-      if (controller.step(m, cmd) != Status::ok) ++rejected;
-      WheelTorques<kRigidRwWheels> w;
-      const Status s = allocator.step(cmd, w);
-      u_s = w.u_s_Nm;  // zero when refused (the wheels coast)
-      if (s == Status::saturated) ++saturated;
-      else if (s != Status::ok) ++rejected;
-      LimitReport lr;  // each wheel's speed limit (the torque limit is the allocator's)
-      if (limit_wheel_torques<kRigidRwWheels>(limits, RigidRwPlant::Omega(xs), u_s, &lr) == Status::saturated)
-        speed_held += lr.wheel_speed_held;
-      u.head<kRigidRwWheels>() = u_s;
-      u.tail<3>().setZero();
-      ++samples;
+      return m;
     };
-    auto observe = [&](double t, const RigidRwPlant::State& xs, const RigidRwPlant::Input& u) {
+    auto to_actuation = [](double, const RigidRwPlant::State&, const BodyTorque& cmd) { return cmd; };
+    auto to_plant = [&](double, const RigidRwPlant::State& xs, const WheelTorques<kRigidRwWheels>& w,
+                        RigidRwPlant::Input& u) {
+      set_wheel_input(limits, xs, w, u, speed_held);
+      u.tail<3>().setZero();
+    };
+    auto observe = [&](const auto& s) {
+      const double t = s.t_s;
+      const RigidRwPlant::State& xs = s.x;
+      const RigidRwPlant::Input& u = s.u;
+      if (!s.final) {  // once per control step
+        ++samples;
+        if (s.controller_status != Status::ok) ++rejected;
+        if (s.actuation_status == Status::saturated) ++saturated;
+        else if (s.actuation_status != Status::ok) ++rejected;
+      }
       const double err = mrp_principal_angle(mrp_subtract(RigidRwPlant::sigma_BN(xs), ref.sigma_RN));
       t_series.push_back(t);
       err_series.push_back(err);
@@ -173,14 +177,12 @@ class RigidRwMrpPd final : public Scenario {
       if (csv) {
         rigid_rw_row(t, xs, row);
         row.push_back(err);
-        for (int i = 0; i < 3; ++i) row.push_back(cmd.torque_B_Nm(i));
+        for (int i = 0; i < 3; ++i) row.push_back(s.command.torque_B_Nm(i));
         for (int i = 0; i < kRigidRwWheels; ++i) row.push_back(u(i));
-        if (t == t_end) csv->record_final(row.data()); else csv->record(row.data());
+        csv->record_row(row, s.final);
       }
     };
-    with_integrator(plant, p, [&](auto& integrator) {
-      run_sampled_data(plant, integrator, x, opt, control, observe);
-    });
+    closed_loop(plant, x, opt, integrator_choice(p), sensors, controller, to_actuation, allocator, to_plant, observe);
     if (csv) csv->close();
 
     const double att_err_final = err_series.empty() ? NAN : err_series.back();

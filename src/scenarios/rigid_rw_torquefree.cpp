@@ -55,7 +55,7 @@ class RigidRwTorqueFree final : public Scenario {
     opt.t_end = p.get_number("duration_s");
     opt.sample_period = p.get_number("control_period_s");
     const double t_end = opt.t_end;
-    with_integrator(plant, p, [&](auto& integrator) {
+    with_integrator(plant, integrator_choice(p), [&](auto& integrator) {  // open loop: no controller
       run_sampled_data(
           plant, integrator, x, opt,
           [](double, const RigidRwPlant::State&, RigidRwPlant::Input& u) { u.setZero(); },
@@ -64,7 +64,7 @@ class RigidRwTorqueFree final : public Scenario {
             dT_max = std::max(dT_max, std::abs(plant.kinetic_energy(xs) - T0));
             if (csv) {
               rigid_rw_row(t, xs, row);
-              if (t == t_end) csv->record_final(row.data()); else csv->record(row.data());
+              csv->record_row(row, t == t_end);
             }
           });
     });

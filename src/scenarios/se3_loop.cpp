@@ -34,13 +34,12 @@
 #include <optional>
 #include <set>
 
+#include "adcs/actuator/saturation.hpp"
 #include "adcs/math/quaternion.hpp"
-#include "sim/cvode_integrator.hpp"
+#include "sim/closed_loop.hpp"
 #include "sim/intervals.hpp"
 #include "sim/metrics.hpp"
 #include "sim/recorder.hpp"
-#include "sim/rk4_integrator.hpp"
-#include "sim/sampled_data.hpp"
 #include "sim/sim_error.hpp"
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
@@ -92,9 +91,11 @@ class Se3Loop {
       fts.emplace(fp);
       if (fts->status() != Status::ok) throw ParamError("FTSMC gains rejected (K >= 0, rho > 0, phi > 0, ...)");
     }
-    CompositeQuantizer<6> Q(c_.q);
-    if (Q.status() != Status::ok) throw ParamError("quantizer parameters rejected");
-    const Vec6 limit = se3_actuator_limits(sp);
+    // Actuation (spec §A.3): sat → Q, or sat alone with quantize=0.
+    SaturatedQuantizer<6> quantized(SaturatedQuantizerParams<6>{c_.q, se3_actuator_limits(sp)});
+    Saturation<6> saturated_only(SaturationParams<6>{se3_actuator_limits(sp)});
+    if (quantized.status() != Status::ok) throw ParamError("quantizer parameters rejected");
+    const CompositeQuantizer<6>& Q = quantized.quantizer();
 
     const Se3PairPlant plant{&chaser, &target, &sp};
     Se3PairPlant::State x;
@@ -107,34 +108,36 @@ class Se3Loop {
     const std::size_t n_ticks = interval_count(c_.duration, c_.period);
     Outcome out;
     std::size_t sample = 0;
-    Vec6 cmd = Vec6::Zero(), last_uc = Vec6::Zero();
+    Vec6 last_uc = Vec6::Zero();
     double psi_used = NAN;
     std::vector<double> row;
 
-    auto control = [&](double, const Se3PairPlant::State& xs, Vec6& u) {
+    // The loop (sim/closed_loop.hpp), per tick (spec §A.5): the desired state from the target
+    // model and the chaser's perfect state → the law (ψ̂ updated inside the PTC step) → the
+    // actuation stage → the chaser's wrench, held (ZOH).
+    auto sensors = [&](double, const Se3PairPlant::State& xs) {
       const Se3SpacecraftState c = Se3PairPlant::body(xs, 0), o = Se3PairPlant::body(xs, Se3PairPlant::kBody);
       Se3DesiredState d;
       if (se3_desired_state(target, o, sp, d) != Status::ok) throw SimError("se3: target state invalid");
       if (ptc) psi_used = ptc->psi_hat();
-      Wrench w;
-      const Status s = ptc ? ptc->step({c, d}, w) : fts->step({c, d}, w);
-      cmd = w.stacked();
-      if (s != Status::ok) ++out.nonok;
-      Vec6 uc = Vec6::Zero();
-      if (c_.quantize) {
-        const Status q = saturate_then_quantize<6>(cmd, limit, Q, uc);
-        if (q == Status::saturated) ++out.saturated;
-        else if (q != Status::ok) throw SimError("se3: quantizer rejected the command");
-      } else {
-        uc = cmd;
-        if (saturate_each<6>(uc, limit) > 0) ++out.saturated;
-        for (int i = 0; i < 6; ++i)  // same counting rule as the quantizer (spec §A.3)
-          if (sample == 0 || uc(i) != last_uc(i)) ++out.tx;
-      }
-      last_uc = uc;
-      u = uc;
+      return Se3TrackingInput{c, d};
     };
-    auto observe = [&](double t, const Se3PairPlant::State& xs, const Vec6& u) {
+    auto to_actuation = [](double, const Se3PairPlant::State&, const Wrench& w) { return Vec6(w.stacked()); };
+    auto to_plant = [](double, const Se3PairPlant::State&, const Vec6& uc, Vec6& u) { u = uc; };
+    auto observe = [&](const auto& s) {
+      const double t = s.t_s;
+      const Se3PairPlant::State& xs = s.x;
+      const Vec6& u = s.u;
+      const Vec6 cmd = s.command.stacked();
+      if (!s.final) {  // once per tick
+        if (s.controller_status != Status::ok) ++out.nonok;
+        if (s.actuation_status == Status::saturated) ++out.saturated;
+        else if (s.actuation_status != Status::ok) throw SimError("se3: the actuation stage rejected the command");
+        if (!c_.quantize)
+          for (int i = 0; i < 6; ++i)  // same counting rule as the quantizer (spec §A.3)
+            if (sample == 0 || u(i) != last_uc(i)) ++out.tx;
+        last_uc = u;
+      }
       const Se3SpacecraftState c = Se3PairPlant::body(xs, 0), o = Se3PairPlant::body(xs, Se3PairPlant::kBody);
       Se3DesiredState d;
       Se3TrackingError e;
@@ -174,7 +177,7 @@ class Se3Loop {
         row.push_back(static_cast<double>(c_.quantize ? Q.transmissions() : out.tx));
         // ψ̂ used in u3 at this tick (before its update); at t_end the last updated value.
         if (ptc) row.push_back(sample < n_ticks ? psi_used : ptc->psi_hat());
-        if (sample == n_ticks) csv->record_final(row.data()); else csv->record(row.data());
+        csv->record_row(row, s.final);
       }
       ++sample;
     };
@@ -182,19 +185,16 @@ class Se3Loop {
     SampledDataOptions opt;
     opt.t_end = c_.duration;
     opt.sample_period = c_.period;
-    if (c_.rk4) {
-      Rk4Integrator<Se3PairPlant> integ(plant, c_.rk4_step);
-      run_sampled_data(plant, integ, x, opt, control, observe);
-      out.steps = integ.steps();
-    } else {
-      CvodeOptions co;
-      co.method = CvodeOptions::Method::adams_fixed_point;
-      co.rtol = c_.rtol;
-      co.atol = c_.atol;
-      CvodeIntegrator<Se3PairPlant> integ(plant, co);
-      run_sampled_data(plant, integ, x, opt, control, observe);
-      out.steps = integ.steps();
-    }
+    IntegratorChoice ic;  // CVODE Adams + fixed point (the truth), or RK4 as the cross-check
+    ic.kind = c_.rk4 ? IntegratorChoice::Kind::rk4 : IntegratorChoice::Kind::adams;
+    ic.rtol = c_.rtol;
+    ic.atol = c_.atol;
+    ic.rk4_step_s = c_.rk4_step;
+    auto fly = [&](auto& law) {
+      out.steps = c_.quantize ? closed_loop(plant, x, opt, ic, sensors, law, to_actuation, quantized, to_plant, observe)
+                              : closed_loop(plant, x, opt, ic, sensors, law, to_actuation, saturated_only, to_plant, observe);
+    };
+    if (ptc) fly(*ptc); else fly(*fts);
     if (csv) csv->close();
     if (c_.quantize) out.tx = Q.transmissions();
     if (ptc) out.psi_final = ptc->psi_hat();

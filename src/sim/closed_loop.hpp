@@ -10,10 +10,12 @@
 //            integrate x over [t_k, t_k+1] with u held
 //
 // `sensors` is the measurement model (perfect, or with noise and dropouts: the loop does not
-// care); `to_actuation` feeds the stage what it needs besides the command (gimbal angles, the
+// care), called with (t, x) or, when it takes it, (t, x, u_held): the input held since the last
+// sample; `to_actuation` feeds the stage what it needs besides the command (gimbal angles, the
 // sample time); `to_plant` maps the actuator output into the plant's held input (and may add a
 // disturbance the plant models as an input). Scenarios become compositions of these pieces.
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "adcs/core/component.hpp"
@@ -51,6 +53,17 @@ void with_integrator(const Plant& plant, const IntegratorChoice& choice, Body&& 
   body(integrator);
 }
 
+//! Calls the measurement model: sensors(t, x, u_held) when it reads the held plant input (a
+//! momentum-form plant's body rate depends on the gimbal rates held over the last period), else
+//! sensors(t, x).
+template <class Sensors, class State, class Input>
+decltype(auto) sense(Sensors& sensors, double t, const State& x, const Input& u_held) {
+  if constexpr (std::is_invocable_v<Sensors&, double, const State&, const Input&>)
+    return sensors(t, x, u_held);
+  else
+    return sensors(t, x);
+}
+
 //! What the observer sees at each sample (and once more at t_end with the last command).
 template <class Plant, class Controller, class Actuation>
 struct LoopSample {
@@ -67,10 +80,11 @@ struct LoopSample {
 };
 
 //! Runs the loop of the header comment from x (state at options.t0) to options.t_end; x holds
-//! the final state on return. Throws SimError on invalid options or an integrator failure.
+//! the final state on return. Returns the integrator's step count (RK4 sub-steps, or CVODE's
+//! internal steps). Throws SimError on invalid options or an integrator failure.
 template <class Plant, class Sensors, class Controller, class ToActuation, class Actuation, class ToPlant,
           class Observer>
-void closed_loop(const Plant& plant, typename Plant::State& x, const SampledDataOptions& options,
+long closed_loop(const Plant& plant, typename Plant::State& x, const SampledDataOptions& options,
                  const IntegratorChoice& integrator_choice, Sensors&& sensors, Controller& controller,
                  ToActuation&& to_actuation, Actuation& actuation, ToPlant&& to_plant, Observer&& observer) {
   ADCS_ASSERT_PLANT(Plant);
@@ -84,7 +98,7 @@ void closed_loop(const Plant& plant, typename Plant::State& x, const SampledData
   typename Actuation::Diagnostics adiag{};
   Status cs = Status::ok, as = Status::ok;
   auto control = [&](double t, const State& xs, Input& u) {
-    cs = controller.step(sensors(t, xs), cmd, &cdiag);
+    cs = controller.step(sense(sensors, t, xs, std::as_const(u)), cmd, &cdiag);
     as = actuation.step(to_actuation(t, xs, std::as_const(cmd)), act, &adiag);
     to_plant(t, xs, std::as_const(act), u);
   };
@@ -92,8 +106,12 @@ void closed_loop(const Plant& plant, typename Plant::State& x, const SampledData
     const bool final = t == options.t_end;
     observer(LoopSample<Plant, Controller, Actuation>{t, xs, u, cmd, cdiag, cs, act, adiag, as, final});
   };
-  with_integrator(plant, integrator_choice,
-                  [&](auto& integrator) { run_sampled_data(plant, integrator, x, options, control, observe); });
+  long steps = 0;
+  with_integrator(plant, integrator_choice, [&](auto& integrator) {
+    run_sampled_data(plant, integrator, x, options, control, observe);
+    steps = integrator.steps();
+  });
+  return steps;
 }
 
 //! The identity actuation stage: the law's output goes to the plant as it is (a torque-input

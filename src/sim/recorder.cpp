@@ -66,6 +66,11 @@ void CsvRecorder::record(const Eigen::Ref<const Eigen::VectorXd>& values) {
 
 void CsvRecorder::record_final(const double* values) { submit(values, true); }
 
+void CsvRecorder::record_row(const std::vector<double>& row, bool final) {
+  check_size(row.size());
+  submit(row.data(), final);
+}
+
 void CsvRecorder::record_final(std::initializer_list<double> values) {
   check_size(values.size());
   submit(values.begin(), true);

@@ -43,6 +43,9 @@ class CsvRecorder {
   void record_final(const double* values);
   void record_final(std::initializer_list<double> values);
   void record_final(const Eigen::Ref<const Eigen::VectorXd>& values);
+  //! record(row), or record_final(row) when `final` (the loop's last observation, at t_end):
+  //! the one "a row, or the final row" of every scenario. Throws SimError on a size mismatch.
+  void record_row(const std::vector<double>& row, bool final);
 
   //! Flushes and closes; throws SimError if a write or the close failed. Idempotent.
   void close();

@@ -7,56 +7,28 @@
 // ADCS_ASSERT_COMPONENT in every header and IsAComponent below.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <vector>
 
 #include "component_fixtures.hpp"
 
 namespace {
 
-// The output of any component as a flat list of its numbers (for finiteness and bit comparison).
-template <class Derived>
-void append(std::vector<double>& v, const Eigen::MatrixBase<Derived>& x) {
-  for (Eigen::Index i = 0; i < x.size(); ++i) v.push_back(x.derived().coeff(i));
-}
-std::vector<double> flat(const adcs::BodyTorque& o) { std::vector<double> v; append(v, o.torque_B_Nm); return v; }
-std::vector<double> flat(const adcs::Wrench& o) { std::vector<double> v; append(v, o.stacked()); return v; }
-template <int M, int N>
-std::vector<double> flat(const adcs::VscmgRates<M, N>& o) { std::vector<double> v; append(v, o.stacked()); return v; }
-template <int N>
-std::vector<double> flat(const adcs::WheelTorques<N>& o) { std::vector<double> v; append(v, o.u_s_Nm); return v; }
-template <int N>
-std::vector<double> flat(const adcs::PidOutput<N>& o) { std::vector<double> v; append(v, o.u); return v; }
-template <int N>
-std::vector<double> flat(const adcs::EskfOutput<N>& o) { std::vector<double> v; append(v, o.x_hat); return v; }
-std::vector<double> flat(const adcs::SaturatedEsfOutput& o) { std::vector<double> v; append(v, o.x_hat); return v; }
-std::vector<double> flat(const adcs::DragFreeActuation& o) { std::vector<double> v; append(v, o.stacked()); return v; }
-template <int L>
-std::vector<double> flat(const adcs::Vec<L>& o) { std::vector<double> v; append(v, o); return v; }
-
-bool finite(const std::vector<double>& v) {
-  for (double x : v)
-    if (!std::isfinite(x)) return false;
-  return true;
-}
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
+using adcs::test::OutputValues;  // a component's output as numbers (component_list.hpp)
 
 template <class C>
 class ComponentContract : public ::testing::Test {
  protected:
   using Fx = adcs::test::ComponentFixture<C>;
   //! Outputs of `c` over inputs first..last−1 (asserting each step usable and finite).
-  static std::vector<std::vector<double>> run(C& c, int first, int last) {
-    std::vector<std::vector<double>> outs;
+  static std::vector<OutputValues> run(C& c, int first, int last) {
+    std::vector<OutputValues> outs;
     for (int k = first; k < last; ++k) {
       typename C::Output out{};
       typename C::Diagnostics diag{};
       const adcs::Status s = c.step(Fx::input(k), out, &diag);
       EXPECT_TRUE(adcs::usable(s)) << "step " << k << ": " << adcs::to_string(s);
-      outs.push_back(flat(out));
-      EXPECT_TRUE(finite(outs.back())) << "step " << k;
+      outs.emplace_back(out);
+      EXPECT_TRUE(outs.back().finite()) << "step " << k;
     }
     return outs;
   }
@@ -85,13 +57,13 @@ TYPED_TEST(ComponentContract, RejectedInputLeavesStateUntouchedAndOutputFinite) 
   typename TypeParam::Output out{};
   const adcs::Status s = a.step(bad, out);
   EXPECT_FALSE(adcs::usable(s)) << adcs::to_string(s);
-  EXPECT_TRUE(finite(flat(out)));
+  EXPECT_TRUE(OutputValues(out).finite());
   // With the diagnostics requested too: the same answer.
   typename TypeParam::Diagnostics diag{};
   EXPECT_EQ(a.step(bad, out, &diag), s);
   const auto after_a = TestFixture::run(a, 10, 20), after_b = TestFixture::run(b, 10, 20);
   ASSERT_EQ(after_a.size(), after_b.size());
-  for (std::size_t k = 0; k < after_a.size(); ++k) EXPECT_TRUE(same_bits(after_a[k], after_b[k])) << "step " << 10 + k;
+  for (std::size_t k = 0; k < after_a.size(); ++k) EXPECT_TRUE(after_a[k].same_bits(after_b[k])) << "step " << 10 + k;
 }
 
 TYPED_TEST(ComponentContract, ResetBringsBackAFreshInstance) {
@@ -100,14 +72,14 @@ TYPED_TEST(ComponentContract, ResetBringsBackAFreshInstance) {
   TestFixture::run(used, 0, 20);
   used.reset();
   const auto a = TestFixture::run(used, 0, 10), b = TestFixture::run(fresh, 0, 10);
-  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_TRUE(same_bits(a[k], b[k])) << "step " << k;
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_TRUE(a[k].same_bits(b[k])) << "step " << k;
 }
 
 TYPED_TEST(ComponentContract, SameInputsSameOutputsBitForBit) {
   using Fx = typename TestFixture::Fx;
   TypeParam a(Fx::params()), b(Fx::params());
   const auto oa = TestFixture::run(a, 0, 15), ob = TestFixture::run(b, 0, 15);
-  for (std::size_t k = 0; k < oa.size(); ++k) EXPECT_TRUE(same_bits(oa[k], ob[k])) << "step " << k;
+  for (std::size_t k = 0; k < oa.size(); ++k) EXPECT_TRUE(oa[k].same_bits(ob[k])) << "step " << k;
 }
 
 }  // namespace
