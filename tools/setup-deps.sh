@@ -26,6 +26,13 @@ pkgs=(
   libomp-14-dev                #   OpenMP for clang: SUNDIALS' CMake config requires it
   gcovr                        # coverage preset (lines of include/adcs)
   valgrind                     # callgrind instruction counts per step (tools/callgrind-counts.sh)
+  libcli11-dev                 # adcs-sim's command line (CLI11 2.1)
+  nlohmann-json3-dev           # adcs-sim's JSON outputs and inputs (nlohmann/json 3.11)
+  libtomlplusplus-dev          # vehicle / scenario files (toml++ 3.3, examples/vehicles/*.toml)
+  libhdf5-dev                  # Monte Carlo time-series envelopes, one file per campaign (HDF5 1.10)
+  python3-h5py                 #   read by tools/plot.py and tools/report.py
+  slurm-wlm                    # the single-node Slurm test of tools/slurm/ (ctest label slurm)
+  munge                        #   Slurm's authentication daemon
 )
 
 missing=()

@@ -13,7 +13,12 @@ void check_column(const Column& c) {
                    "] (names must be non-empty; no commas or line breaks)");
 }
 
+thread_local RowCapture* t_capture = nullptr;
+
 }  // namespace
+
+RowCaptureScope::RowCaptureScope(RowCapture& c) : previous_(t_capture) { t_capture = &c; }
+RowCaptureScope::~RowCaptureScope() { t_capture = previous_; }
 
 CsvRecorder::CsvRecorder(const std::string& path, std::vector<Column> columns, int decimation)
     : path_(path), columns_(std::move(columns)) {
@@ -23,6 +28,18 @@ CsvRecorder::CsvRecorder(const std::string& path, std::vector<Column> columns, i
   decimation_ = static_cast<std::size_t>(decimation);
   for (const Column& c : columns_) check_column(c);
 
+  if (t_capture && t_capture->path == path_) {
+    capture_ = t_capture;
+    capture_->opened = true;
+    capture_->values.assign(capture_->columns.size(), {});
+    for (const Column& c : columns_) capture_->available.push_back(c.name);
+    for (const std::string& want : capture_->columns) {
+      std::size_t k = 0;
+      while (k < columns_.size() && columns_[k].name != want) ++k;
+      if (k == columns_.size()) capture_->missing.push_back(want);
+      capture_index_.push_back(k);
+    }
+  }
   file_.reset(std::fopen(path_.c_str(), "w"));
   if (!file_) throw SimError("CsvRecorder: cannot open " + path_ + " for writing");
 
@@ -103,6 +120,9 @@ void CsvRecorder::submit(const double* values, bool always_write) {
   if (std::fwrite(line_.data(), 1, line_.size(), file_.get()) != line_.size())
     throw SimError("CsvRecorder: write to " + path_ + " failed");
   ++rows_written_;
+  if (capture_)
+    for (std::size_t c = 0; c < capture_index_.size(); ++c)
+      if (capture_index_[c] < columns_.size()) capture_->values[c].push_back(values[capture_index_[c]]);
 }
 
 void CsvRecorder::close() {

@@ -21,6 +21,32 @@ struct Column {
   std::string unit;  //!< unit shown in the units line, e.g. "s", "rad/s", "-" for dimensionless
 };
 
+//! Chosen columns of the time series a run records, captured in memory while it is written (the
+//! Monte Carlo envelopes of issue 18: no CSV is read back). While a RowCaptureScope is alive on
+//! the calling thread, a CsvRecorder opened on `path` appends each row it writes (after
+//! decimation) to `values`, one vector per wanted column; a wanted column the recorder does not
+//! have is listed in `missing`.
+struct RowCapture {
+  std::string path;                          //!< the run's csv_path the capture listens to
+  std::vector<std::string> columns;          //!< wanted column names
+  std::vector<std::vector<double>> values;   //!< per wanted column, one value per written row
+  std::vector<std::string> missing;          //!< wanted columns the recorder lacks
+  std::vector<std::string> available;        //!< the recorder's columns (for the error message)
+  bool opened = false;                       //!< a recorder opened `path`
+};
+
+//! Installs a capture for the calling thread for its lifetime (scoped, like ProgressScope).
+class RowCaptureScope {
+ public:
+  explicit RowCaptureScope(RowCapture& c);
+  ~RowCaptureScope();
+  RowCaptureScope(const RowCaptureScope&) = delete;
+  RowCaptureScope& operator=(const RowCaptureScope&) = delete;
+
+ private:
+  RowCapture* previous_;
+};
+
 //! Writes one row per kept record() call: with decimation k, calls 0, k, 2k, ... are written.
 //! record_final() is meant for the last sample: it always writes, whatever the decimation, so the
 //! end of the run is in the file. Not copyable; movable.
@@ -68,6 +94,8 @@ class CsvRecorder {
   std::size_t rows_written_ = 0;  //!< data rows in the file
   std::unique_ptr<std::FILE, FileCloser> file_;
   std::string line_;  //!< row buffer, reused
+  RowCapture* capture_ = nullptr;          //!< the thread's capture, when it listens to path_
+  std::vector<std::size_t> capture_index_; //!< recorder column of each wanted column
 };
 
 }  // namespace adcs::sim
