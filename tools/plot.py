@@ -36,6 +36,8 @@ import os
 import re
 import sys
 
+import campaign_plots  # tools/campaign_plots.py: Monte Carlo figures
+
 PROG = "plot.py"
 FIGSIZE = (8.0, 4.5)
 DPI = 150
@@ -468,11 +470,18 @@ def main(argv):
         if name.endswith(".json"):
             name = name[:-len(".json")]
         try:
-            if not process(out_dir, name):
+            if name.endswith("-montecarlo"):
+                for p in campaign_plots.campaign_figures(out_dir, name[:-len("-montecarlo")]):
+                    print(p)
+            elif not process(out_dir, name):
                 status = 1
         except InputError as e:
             error(str(e))
             status = 1
+    if not argv[2:]:  # every campaign too (band plots, histograms: tools/campaign_plots.py)
+        for name in campaign_plots.campaign_names(out_dir):
+            for p in campaign_plots.campaign_figures(out_dir, name):
+                print(p)
     return status
 
 

@@ -232,8 +232,63 @@ def scenario_section(lines, out_dir, s):
             lines.append("")
 
 
+def campaign_section(lines, out_dir, c):
+    """A Monte Carlo campaign (issue 18): counts, per-metric statistics, per-claim pass counts,
+    the worst runs with the command that reruns each alone, and the band plots and histograms."""
+    m = c.meta
+    counts = m.get("counts") or {}
+    lines.append(f"### {m.get('scenario', c.stem)}: {m.get('runs')} runs")
+    lines.append("")
+    lines.append(f"- campaign `{m.get('campaign_id')}`, seed0 {m.get('seed0')}; "
+                 f"{counts.get('ok', 0)} ok, {counts.get('invalid', 0)} invalid, {counts.get('failed', 0)} failed")
+    for d in m.get("dispersions") or []:
+        lines.append(f"- `--disperse {d}`")
+    for st in m.get("sets") or []:
+        lines.append(f"- `--set {st}`")
+    if m.get("csv"):
+        lines.append(f"- data: [{m['csv']}]({m['csv']})" + (f", envelopes: `{m['series_file']}`" if m.get("series_file") else ""))
+    lines.append("")
+    claims = m.get("claims") or []
+    if claims:
+        lines.append("| claim | over the runs |")
+        lines.append("|---|---|")
+        for cl in claims:
+            lines.append(f"| {cell(cl.get('claim'))} | {cell(cl.get('summary'))} |")
+        lines.append("")
+    metrics = m.get("metrics") or {}
+    if metrics:
+        cols = ["min", "p1", "p5", "median", "p95", "p99", "max", "mean", "std"]
+        lines.append("| metric | " + " | ".join(cols) + " | non-finite |")
+        lines.append("|---|" + "---|" * (len(cols) + 1))
+        for k, v in metrics.items():
+            if not isinstance(v, dict):
+                continue
+            lines.append(f"| {cell(k)} | " + " | ".join(cell(fmt_value(v.get(q))) for q in cols) + f" | {v.get('nonfinite', 0)} |")
+        lines.append("")
+    worst = (m.get("worst_runs") or {})
+    if worst.get("runs"):
+        lines.append(f"Worst runs by `{worst.get('metric')}` (each reruns alone with its command):")
+        lines.append("")
+        for w in worst["runs"]:
+            lines.append(f"- run {w.get('run')}: {fmt_value(w.get('value'))} — `{w.get('command')}`")
+        lines.append("")
+    failed = m.get("failed_runs") or []
+    if failed:
+        lines.append("Invalid and failed runs:")
+        lines.append("")
+        for f in failed:
+            lines.append(f"- run {f.get('run')} ({f.get('status')}): {' '.join(str(f.get('error')).split())} — `{f.get('command')}`")
+        lines.append("")
+    figs = sorted(fn for fn in os.listdir(out_dir) if fn.startswith(c.stem + "-") and fn.endswith(".png"))
+    for fn in figs:
+        lines.append(f"![{md_alt(fn)}]({fn})")
+        lines.append("")
+
+
 def build(out_dir):
-    scenarios, unreadable = load(out_dir)
+    everything, unreadable = load(out_dir)
+    campaigns = [s for s in everything if s.stem.endswith("-montecarlo")]
+    scenarios = [s for s in everything if not s.stem.endswith("-montecarlo")]
     claims = [c for s in scenarios for c in s.all_claims()]
     n = len(claims)
     n_yes = sum(1 for c in claims if criterion_of(c) is True)
@@ -252,7 +307,7 @@ def build(out_dir):
     summary += f", {n_unjudged} not judged" if n_unjudged else ""
     summary += f" (of {len(paper)} paper claims); criteria: {n} claims, {n_yes} hold, {n_no} do not"
     summary += f", {n_na} n/a.**" if n_na else ".**"
-    summary += f" Scenarios: {len(scenarios)}."
+    summary += f" Scenarios: {len(scenarios)}." + (f" Campaigns: {len(campaigns)}." if campaigns else "")
     lines.append(summary)
     lines.append("")
     if unreadable:
@@ -284,6 +339,11 @@ def build(out_dir):
         lines.append("")
     for s in scenarios:
         scenario_section(lines, out_dir, s)
+    if campaigns:
+        lines.append("## Campaigns")
+        lines.append("")
+        for c in campaigns:
+            campaign_section(lines, out_dir, c)
     while lines and lines[-1] == "":
         lines.pop()
     return "\n".join(lines) + "\n", n_no, bool(unreadable)

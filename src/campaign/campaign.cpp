@@ -280,7 +280,7 @@ CampaignCounts run_campaign(const CampaignPlan& plan, const ExecOptions& exec) {
     log.reset();
     series_out.reset();
   }
-  progress.report(true);
+  if (pending.empty()) progress.report(true);  // nothing ran: say so once
   if (exec.shard_count == 1) finalize_from_dirs({exec.out_dir}, exec.out_dir, plan.name);
   return counts;
 }

@@ -84,7 +84,11 @@ RunRow row_from_json(const Json& j) {
 }
 
 std::string campaign_id_of(const Json& identity) {
-  const std::string text = identity.dump();
+  // The path a target was given by is not part of the identity: every Slurm task may spell the
+  // same vehicle file differently (the file's content is, in source_id).
+  Json hashed = identity;
+  hashed.erase("run_target");
+  const std::string text = hashed.dump();
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(mix64(name_hash(text))));
   return buf;

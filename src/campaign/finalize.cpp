@@ -70,19 +70,23 @@ std::vector<FoundLog> find_logs(const std::vector<fs::path>& dirs, const std::st
   return logs;
 }
 
+//! A statistic in the campaign JSON: null when undefined (no finite value), as a run's JSON
+//! writes a non-finite metric (the count of non-finite values says why).
+Json stat(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
 Json summary_json(const Summary& s) {
   Json j;
   j["count"] = s.count;
   j["nonfinite"] = s.nonfinite;
-  j["min"] = json_number(s.min);
-  j["p1"] = json_number(s.p1);
-  j["p5"] = json_number(s.p5);
-  j["median"] = json_number(s.median);
-  j["p95"] = json_number(s.p95);
-  j["p99"] = json_number(s.p99);
-  j["max"] = json_number(s.max);
-  j["mean"] = json_number(s.mean);
-  j["std"] = json_number(s.std);
+  j["min"] = stat(s.min);
+  j["p1"] = stat(s.p1);
+  j["p5"] = stat(s.p5);
+  j["median"] = stat(s.median);
+  j["p95"] = stat(s.p95);
+  j["p99"] = stat(s.p99);
+  j["max"] = stat(s.max);
+  j["mean"] = stat(s.mean);
+  j["std"] = stat(s.std);
   return j;
 }
 
@@ -299,6 +303,7 @@ FinalizeResult finalize_from_dirs(const std::vector<fs::path>& dirs, const fs::p
   for (const auto& m : metric_names) {
     const Json& s = metrics[m];
     ms[m] = {{"min", s["min"]}, {"median", s["median"]}, {"max", s["max"]}};
+    if (s["nonfinite"].get<std::uint64_t>() > 0) ms[m]["nonfinite"] = s["nonfinite"];
   }
   line["metrics"] = ms;
   out.summary_line = line;

@@ -174,17 +174,17 @@ mc="$dir/$S-montecarlo.csv"
 [ -s "$mc" ] || fail "montecarlo: no $S-montecarlo.csv"
 [ -s "$dir/$S-montecarlo.json" ] || fail "montecarlo: no $S-montecarlo.json"
 [ ! -e "$dir/$S.csv" ] || fail "montecarlo wrote a per-run time series"
-grep -q '^\[1/3\] seed=5' "$TMP/stderr" && grep -q '^\[3/3\] seed=7' "$TMP/stderr" \
+grep -q '^\[3/3 runs\] 0 invalid, 0 failed' "$TMP/stderr" \
   || { show; fail "montecarlo: no progress lines on stderr"; }
 "$PY" -c '
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
-assert rows[0][0] == "seed" and len(rows[0]) >= 2, rows[0]
+assert rows[0][0] == "run" and rows[0][-3:] == ["status", "seed", "error"], rows[0]
 assert len(rows) == 4, "want a header and 3 rows, got %d lines" % len(rows)
-assert [r[0] for r in rows[1:]] == ["5", "6", "7"], [r[0] for r in rows[1:]]
+assert [r[0] for r in rows[1:]] == ["0", "1", "2"], [r[0] for r in rows[1:]]
 for r in rows[1:]:
-    assert len(r) == len(rows[0]), r
-    [float(x) for x in r[1:]]
+    assert len(r) == len(rows[0]) and r[-3] == "ok", r
+    [float(x) for x in r[1:-3]]
 ' "$mc" || fail "montecarlo: bad $mc"
 tail -n 1 "$TMP/stdout" | "$PY" -c '
 import json, sys

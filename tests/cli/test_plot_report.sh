@@ -88,9 +88,14 @@ with open(os.path.join(d, "noplots.json"), "w") as f:
     json.dump({"scenario": "noplots", "seed": 0, "parameters": {}, "metrics": {"a": 1},
                "claims": [], "csv": "noplots.csv"}, f)
 
-# Monte-Carlo summaries are not plotted by default (and have no CSV here).
+# A Monte Carlo campaign's summary (no CSV or envelopes here, so no campaign figures).
 with open(os.path.join(d, "demo-montecarlo.json"), "w") as f:
-    json.dump({"scenario": "demo", "runs": 3, "metrics": {"p95": 0.5}}, f)
+    json.dump({"scenario": "demo", "runs": 3, "seed0": 1, "counts": {"ok": 3, "invalid": 0, "failed": 0},
+               "metrics": {"err": {"count": 3, "nonfinite": 0, "min": 0.1, "p1": 0.1, "p5": 0.1, "median": 0.2,
+                                   "p95": 0.5, "p99": 0.5, "max": 0.5, "mean": 0.27, "std": 0.2}},
+               "claims": [{"kind": "check", "claim": "err small", "held": 2, "failed": 1, "summary": "held in 2 / 3"}],
+               "worst_runs": {"metric": "err", "runs": [{"run": 2, "value": 0.5, "command": "adcs-sim run demo --seed 9"}]},
+               "failed_runs": []}, f)
 EOF
 
 is_png() {  # non-empty file starting with the 8-byte PNG signature
@@ -149,6 +154,10 @@ need "![Attitude error in the funnel](demo-attitude.png)"
 need "![PSD of sigma](demo-psd.png)"
 need "](noplots-sigma_BN.png)"
 need "Synthetic plot/report test | pipes ok"
+need "## Campaigns"
+need "| err small | held in 2 / 3 |"
+need "| err | 0.1 | 0.1 | 0.1 | 0.2 | 0.5 | 0.5 | 0.5 | 0.27 | 0.2 | 0 |"
+need "- run 2: 0.5 — \`adcs-sim run demo --seed 9\`"
 
 # Deterministic: a second run gives the same file.
 cp "$R" "$TMP/REPORT.first"
