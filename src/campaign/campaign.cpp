@@ -240,6 +240,9 @@ CampaignCounts run_campaign(const CampaignPlan& plan, const ExecOptions& exec) {
     SeriesRecord first_series;
     const RunRow first = execute_run(plan, pending.front(), want_series ? &first_series : nullptr);
     if (first.status == RunStatus::invalid && first.error.rfind("--series", 0) == 0) throw ParamError(first.error);
+    // Without dispersions every run has the nominal parameters: one refused is all refused, and
+    // that is a bad command line (as `run` would say), not a campaign of invalid runs.
+    if (first.status == RunStatus::invalid && plan.dispersions.empty()) throw ParamError(first.error);
     if (first.status == RunStatus::ok && !plan.rank_metric.empty()) {
       bool found = false;
       for (const auto& m : first.metrics) found = found || m.first == plan.rank_metric;
