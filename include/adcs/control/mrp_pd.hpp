@@ -89,8 +89,13 @@ class MrpPd {
     const Vec3 sigma_BR = mrp_subtract(m.sigma_BN, r.sigma_RN);
     const Vec3 omega_BR_B = m.omega_BN_B - omega_RN_B;
     const Vec3& w = m.omega_BN_B;
-    const Vec<N> h_s = p_.J_s.cwiseProduct(p_.G_s_B.transpose() * w + in.Omega_rad_s);
-    const Vec3 H_B = p_.J_rw_B * w + p_.G_s_B * h_s;
+    Vec3 H_B;
+    if constexpr (N > 0) {
+      const Vec<N> h_s = p_.J_s.cwiseProduct(p_.G_s_B.transpose() * w + in.Omega_rad_s);
+      H_B = p_.J_rw_B * w + p_.G_s_B * h_s;
+    } else {  // no wheels: no G_s h_s term (a product with the empty 3x0 G_s would be UB)
+      H_B = p_.J_rw_B * w;
+    }
     Output c;
     c.torque_B_Nm = -p_.K * sigma_BR - p_.P * omega_BR_B + p_.J_rw_B * (domega_RN_B - w.cross(omega_RN_B)) +
                     w.cross(H_B);

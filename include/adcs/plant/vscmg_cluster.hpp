@@ -92,8 +92,11 @@ struct VscmgGeometry {
   //! seed 001 eq. (1)
   Vec3 internal_momentum(const Vec<M>& gamma, const Vec<M>& gamma_dot,
                          const Vec<N>& Omega_w) const noexcept {
-    return Vec3(A_cs(gamma) * h_cw + A_cg * I_cg.cwiseProduct(gamma_dot) +
-                A_ws * I_wws.cwiseProduct(Omega_w));
+    Vec3 H = A_cs(gamma) * h_cw + A_cg * I_cg.cwiseProduct(gamma_dot);
+    // A pure CMG cluster has no wheel term: a product with the empty 3x0 A_ws would do pointer
+    // arithmetic on its null data (undefined behaviour UBSan reports), so it is not formed.
+    if constexpr (N > 0) H += A_ws * I_wws.cwiseProduct(Omega_w);
+    return H;
   }
 };
 

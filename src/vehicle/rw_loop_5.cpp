@@ -1,0 +1,6 @@
+// The wheels-only loop with 5 wheels (one instantiation per file: the cores build them in parallel).
+#include "vehicle/rw_loop.hpp"
+
+namespace adcs::sim::vehicle {
+template RunResult run_rw_loop<5>(const VehicleConfig&, const RunContext&);
+}  // namespace adcs::sim::vehicle
