@@ -15,7 +15,7 @@ ADCS_STEP_BENCHMARK(HybridAdaptive);  // seed 001, the paper's estimate update
 ADCS_STEP_BENCHMARK(HybridAdaptiveNormalized);  // seed 001, ours for 5-20 Hz
 }  // namespace adcs::bench
 
-namespace {
+namespace ADCS_UNITY_ID {
 namespace fx = adcs::bench;
 
 // Right pseudo-inverse solve of a 3x4 matrix via LDLT of X X^T, with conditioning report.
@@ -51,8 +51,10 @@ void BM_Lyapunov6(benchmark::State& state) {
 BENCHMARK(BM_Lyapunov6);
 }  // namespace
 
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
+
 namespace adcs::bench {
-namespace {
+namespace ADCS_UNITY_ID {
 const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(MrpPd),
     ADCS_STEP_ENTRY(RwAllocation),
@@ -60,5 +62,6 @@ const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(HybridAdaptiveNormalized),
 };
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 StepTable attitude_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

@@ -13,7 +13,7 @@
 #include "step_benchmark.hpp"
 
 namespace adcs::bench {
-namespace {
+namespace ADCS_UNITY_ID {
 
 template <class C>
 class ComponentStep {
@@ -63,6 +63,7 @@ const Registry& registry() {
 [[maybe_unused]] const bool kRegistered = (registry(), true);
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 StepTable component_steps() noexcept {
   const Registry& r = registry();

@@ -7,11 +7,13 @@ namespace adcs::bench {
 ADCS_STEP_BENCHMARK(FlexiblePPC);  // seed 002 PPATC
 ADCS_STEP_BENCHMARK(AdaptiveTracking);  // seed 002 ATC baseline
 
-namespace {
+namespace ADCS_UNITY_ID {
 const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(FlexiblePPC),
     ADCS_STEP_ENTRY(AdaptiveTracking),
 };
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 StepTable seed002_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

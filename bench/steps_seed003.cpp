@@ -8,12 +8,14 @@ ADCS_STEP_BENCHMARK(SE3PrescribedTime);  // seed 003 BsPdTC
 ADCS_STEP_BENCHMARK(SE3Ftsmc);  // seed 003 FTSMC baseline
 ADCS_STEP_BENCHMARK(CompositeQuantizer);  // seed 003 sat + quantizer, 6 channels
 
-namespace {
+namespace ADCS_UNITY_ID {
 const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(SE3PrescribedTime),
     ADCS_STEP_ENTRY(SE3Ftsmc),
     ADCS_STEP_ENTRY(CompositeQuantizer),
 };
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 StepTable seed003_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

@@ -11,7 +11,7 @@ ADCS_STEP_BENCHMARK(Adrc);  // seed 004 ADRC law alone
 ADCS_STEP_BENCHMARK(Pid);  // seed 004 PID baseline
 ADCS_STEP_BENCHMARK(DragFreeAdrc);  // seed 004 whole sample: Algorithms 1-3 + ADRC
 
-namespace {
+namespace ADCS_UNITY_ID {
 const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(DragFreeEskf),
     ADCS_STEP_ENTRY(SaturatedEsf),
@@ -21,5 +21,7 @@ const StepEntry kSteps[] = {
     ADCS_STEP_ENTRY(DragFreeAdrc),
 };
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 StepTable seed004_steps() noexcept { return step_table(kSteps); }
 }  // namespace adcs::bench

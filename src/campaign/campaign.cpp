@@ -16,7 +16,7 @@
 #include "sim/recorder.hpp"
 
 namespace adcs::sim::campaign {
-namespace {
+namespace ADCS_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -77,6 +77,7 @@ Json parameters_json(const ParamSet& ps) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 Json campaign_identity(const CampaignPlan& plan) {
   Json id;

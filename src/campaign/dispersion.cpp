@@ -9,7 +9,7 @@
 #include "campaign/seeding.hpp"
 
 namespace adcs::sim::campaign {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
@@ -78,6 +78,7 @@ Mat3 to_mat3(const std::vector<std::vector<double>>& m) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 Dispersion parse_dispersion(const std::string& text) {
   const auto eq = text.find('=');

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 namespace adcs::sim::campaign {
-namespace {
+namespace ADCS_UNITY_ID {
 
 //! Owns one HDF5 identifier; closes it with the matching H5*close.
 class Handle {
@@ -35,6 +35,7 @@ void write_dataset(hid_t group, const char* name, const std::vector<hsize_t>& di
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 void write_envelopes_h5(const std::string& path, const std::vector<Envelope>& envelopes) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions here, not stderr text

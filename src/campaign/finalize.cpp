@@ -13,7 +13,7 @@
 #include "scenarios/params.hpp"
 
 namespace adcs::sim::campaign {
-namespace {
+namespace ADCS_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -91,6 +91,7 @@ Json summary_json(const Summary& s) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::string rerun_command(const Json& identity, const RunRow& row) {
   std::string cmd = "adcs-sim run " + shell_quote(identity.at("run_target").get<std::string>()) + " --seed " +

@@ -14,7 +14,7 @@
 #include "campaign/statistics.hpp"
 
 namespace adcs::sim::campaign {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr std::uint32_t kMagic = 0x52534441u;  // "ADSR" in the file (little-endian)
 constexpr std::uint64_t kHeaderBytes = 4 + 4 + 8 + 8;
@@ -57,6 +57,7 @@ double interpolate(const std::vector<double>& ts, const std::vector<double>& ys,
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 SeriesWriter::SeriesWriter(const std::string& path, bool resume) : path_(path) {
   std::uint64_t valid = 0;

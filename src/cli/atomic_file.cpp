@@ -10,7 +10,7 @@
 
 namespace adcs::sim::cli {
 namespace fs = std::filesystem;
-namespace {
+namespace ADCS_UNITY_ID {
 
 // Paths the signal handler removes: files first (unlink), then directories (rmdir, newest
 // first). Fixed storage so that the handler only touches async-signal-safe state.
@@ -46,6 +46,7 @@ extern "C" void cleanup_on_signal(int sig) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 void install_cleanup_signal_handlers() {
   static bool installed = false;

@@ -16,7 +16,7 @@
 #include "cli/scenario_runs.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr std::uint64_t kMaxRuns = 10000000;
 
@@ -72,6 +72,7 @@ std::vector<std::string> split_commas(const std::string& text) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 void declare_montecarlo(CommandLine& cl, Options& o) {
   declare_scenario_name(cl, o);

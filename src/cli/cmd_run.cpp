@@ -12,7 +12,7 @@
 #include "sim/recorder.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 //! Writes each extra table of a run to its temporary file (same CSV format as the time series).
 std::vector<std::unique_ptr<TempFile>> write_tables(const RunResult& r, OutputDir& dir) {
@@ -36,6 +36,7 @@ std::vector<std::unique_ptr<TempFile>> write_tables(const RunResult& r, OutputDi
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 void declare_run(CommandLine& cl, Options& o) {
   declare_scenario_name(cl, o);

@@ -8,7 +8,7 @@
 #include "cli/options.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 // CLI11 2.1 reads some option words differently from adcs-sim's grammar (command_line.hpp).
 // Rather than re-implement its reading, each word is marked so that CLI11's own rules give
@@ -45,6 +45,7 @@ bool has_inline_value(const std::string& raw_flag_result) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 CommandLine::CommandLine(std::string command)
     : command_(std::move(command)), app_(std::make_unique<CLI::App>("", kProg + (" " + command_))) {

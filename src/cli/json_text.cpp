@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 //! `s` quoted and escaped by nlohmann.
 std::string string_text(const std::string& s) {
@@ -50,6 +50,7 @@ void append(std::string& out, const Json& value, int pretty_depth, std::size_t d
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::string json_number(double x) {
   if (!std::isfinite(x)) return "null";

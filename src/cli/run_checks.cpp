@@ -2,7 +2,7 @@
 #include "cli/commands.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 bool has_number(const ParamSet& ps, const char* key) {
   return ps.has(key) && ps.at(key).kind == ParamKind::number;
@@ -25,6 +25,7 @@ void check_steps(const ParamSet& ps, const char* step_key, const char* what) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 void check_run_parameters(const ParamSet& ps) {
   // duration_s and control_period_s are declared as numbers by every scenario (contract).

@@ -6,7 +6,7 @@
 #include <set>
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 Json param_value(ParamKind kind, const ParamValue& v) {
   switch (kind) {
@@ -46,6 +46,7 @@ Summary summarize(std::vector<double> v) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 Json parameters_json(const ParamSet& ps, const std::vector<UsedValue>& used) {
   Json params = Json::object();

@@ -19,7 +19,7 @@
 #include "sim/sampled_data.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 void check_metrics(const Scenario& s, const RunResult& r) {
   std::set<std::string> seen;
@@ -37,6 +37,7 @@ void check_metrics(const Scenario& s, const RunResult& r) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 bool is_vehicle_file(const std::string& name) {
   return name.find('/') != std::string::npos || (name.size() > 5 && name.compare(name.size() - 5, 5, ".toml") == 0);

@@ -31,9 +31,10 @@
 #include "scenarios/scenario.hpp"
 #include "scenarios/status_counts.hpp"
 #include "sim/recorder.hpp"
+#include "sim/format.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kDeg = kPiRad / 180.0;
 constexpr const char* kUser = "assumed: small-satellite 4-CMG pyramid of issue 15 (skew 60 deg, 0.03 N m s)";
@@ -124,12 +125,6 @@ LawRun run_law(const Setup& s, int law, const Vec3& tau_req, double t_end) {
 double dwell_s(const LawRun& r, double t_end) {
   if (r.t_enter < 0.0) return 0.0;
   return (r.t_leave >= 0.0 ? r.t_leave : t_end) - r.t_enter;
-}
-
-std::string fmt(const char* f, double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, x);
-  return buf;
 }
 
 class CmgSingularityEscape final : public Scenario {
@@ -289,6 +284,7 @@ class CmgSingularityEscape final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_cmg_singularity_escape() { return std::make_unique<CmgSingularityEscape>(); }
 

@@ -44,7 +44,7 @@
 #include "sim/recorder.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kD2R = 3.14159265358979323846 / 180.0;
 constexpr const char* kTable = "seed 002 Table 1/2";
@@ -447,6 +447,7 @@ class CrossFlexibleEsoAdrc final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_flexible_eso_adrc() { return std::make_unique<CrossFlexibleEsoAdrc>(); }
 

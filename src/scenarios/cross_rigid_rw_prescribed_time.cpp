@@ -56,7 +56,7 @@
 #include "sim/recorder.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kRad2Deg = 180.0 / kPiRad;
 constexpr const char* kTable1 =
@@ -434,6 +434,7 @@ class CrossRigidRwPrescribedTime final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_rigid_rw_prescribed_time() {
   return std::make_unique<CrossRigidRwPrescribedTime>();

@@ -41,9 +41,10 @@
 #include "sim/closed_loop.hpp"
 #include "sim/recorder.hpp"
 #include "sim/sampled_data.hpp"
+#include "sim/format.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr int kM = 4, kN = 3;
 using FullPlant = VscmgFullPlant<kM, kN>;
@@ -453,13 +454,6 @@ void law_metrics(RunResult& r, const Trace& t, const std::string& suffix) {
   r.metrics.push_back({"control_steps" + suffix, double(t.steps)});
 }
 
-template <class... Args>
-std::string fmt(const char* f, Args... args) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, args...);
-  return buf;
-}
-
 //! The check rows every cross pairing gets, and the comparison with the paper law.
 void common_claims(RunResult& r, const std::string& law_name, const Trace& cross, const Trace& paper,
                    const CommonConfig& c, const std::string& comparison_note) {
@@ -786,6 +780,7 @@ class VscmgMrpPd final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_hybrid_ppc() { return std::make_unique<HybridPpc>(); }
 std::unique_ptr<Scenario> make_vscmg_mrp_pd() { return std::make_unique<VscmgMrpPd>(); }

@@ -19,7 +19,7 @@
 #include "sim/closed_loop.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kDeg = kPiRad / 180.0;
 constexpr const char* kOurs = "ours: chosen for the 12U cubesat at 10 Hz (issue 15), see the scenario file";
@@ -250,6 +250,7 @@ class CubesatPpc final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_cubesat_ppc_10hz() { return std::make_unique<CubesatPpc>(); }
 

@@ -19,7 +19,7 @@
 #include "sim/recorder.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr const char* kT2 = "seed 004 Table 2";
 constexpr double kPi = 3.14159265358979323846;
@@ -876,6 +876,7 @@ class DragFreeScenario final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_dragfree_estimators() { return std::make_unique<DragFreeScenario>(Kind::estimators); }
 std::unique_ptr<Scenario> make_dragfree_adrc() { return std::make_unique<DragFreeScenario>(Kind::adrc); }

@@ -28,7 +28,7 @@
 #include "sim/closed_loop.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 using Plant = FlexibleSpacecraft<2, 4>;
 constexpr const char* kTable = "seed 002 Table 1/2";
@@ -622,6 +622,7 @@ class FlexibleScenario final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_flexible_ppc() { return std::make_unique<FlexibleScenario>(true, false); }
 std::unique_ptr<Scenario> make_flexible_atc() { return std::make_unique<FlexibleScenario>(false, false); }

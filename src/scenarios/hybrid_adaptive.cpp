@@ -29,7 +29,7 @@
 #include "sim/sampled_data.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr int kM = 4, kN = 3;
 using FullPlant = VscmgFullPlant<kM, kN>;
@@ -692,6 +692,7 @@ class HybridScenario final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_hybrid_adaptive() { return std::make_unique<HybridScenario>(true, false); }
 std::unique_ptr<Scenario> make_hybrid_nonadaptive() { return std::make_unique<HybridScenario>(false, false); }

@@ -11,7 +11,7 @@
 #include <utility>
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -272,6 +272,7 @@ std::string format_list(const std::vector<double>& v) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 ParsedValue parse_value(const std::string& text) { return Parser(text).parse(); }
 

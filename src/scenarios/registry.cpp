@@ -39,7 +39,7 @@ std::unique_ptr<Scenario> make_vscmg_mrp_pd();
 std::unique_ptr<Scenario> make_flexible_eso_adrc();
 std::unique_ptr<Scenario> make_rigid_rw_prescribed_time();
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 std::vector<std::unique_ptr<Scenario>> build_registry() {
   std::vector<std::unique_ptr<Scenario>> v;
@@ -85,6 +85,8 @@ bool file_safe(const std::string& n) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 const std::vector<std::unique_ptr<Scenario>>& all_scenarios() {
   static const std::vector<std::unique_ptr<Scenario>> scenarios = build_registry();

@@ -15,7 +15,7 @@
 #include "sim/closed_loop.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 // rigid-rw-mrp-pd: every parameter below is ours (the foundation issue fixes only J, the 10 Hz
 // rate and the 0.2 N m limit): chosen so the saturated slew converges without large overshoot.
@@ -235,6 +235,7 @@ class RigidRwMrpPd final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_rigid_rw_mrp_pd() { return std::make_unique<RigidRwMrpPd>(foundation_vehicle()); }
 std::unique_ptr<Scenario> make_cubesat_mrp_pd() { return std::make_unique<RigidRwMrpPd>(cubesat_vehicle()); }

@@ -11,7 +11,7 @@
 #include "sim/sampled_data.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr const char* kSource = "assumed: harness check, not from a paper";
 
@@ -95,6 +95,7 @@ class RigidRwTorqueFree final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_rigid_rw_torquefree() { return std::make_unique<RigidRwTorqueFree>(); }
 

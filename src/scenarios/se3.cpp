@@ -26,10 +26,11 @@
 #include "scenarios/scenario.hpp"
 #include "scenarios/se3_loop.hpp"
 #include "sim/metrics.hpp"
+#include "sim/format.hpp"
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 using namespace se3;
 
@@ -134,12 +135,6 @@ std::optional<Reference> prototype_row(Law law, int state, double T) {
 
 bool within15(double ours, double proto) { return std::abs(ours - proto) <= 0.15 * std::abs(proto); }
 bool within10s(double ours, double proto) { return std::abs(ours - proto) <= 10.0; }
-
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-  char buf[240];
-  std::snprintf(buf, sizeof buf, f, a, b, c, d);
-  return buf;
-}
 
 std::optional<bool> verdict(bool applies, bool holds) {
   return applies ? std::optional<bool>(holds) : std::nullopt;
@@ -555,6 +550,7 @@ class Se3Scenario final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_se3_ptc() { return std::make_unique<Se3Scenario>(Law::ptc); }
 std::unique_ptr<Scenario> make_se3_ftsmc() { return std::make_unique<Se3Scenario>(Law::ftsmc); }

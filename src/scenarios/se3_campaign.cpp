@@ -20,9 +20,10 @@
 #include "scenarios/se3_loop.hpp"
 #include "sim/metrics.hpp"
 #include "sim/recorder.hpp"
+#include "sim/format.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 using namespace se3;
 
@@ -48,11 +49,6 @@ double proto_sweep(double T) {
   return NAN;
 }
 
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0) {
-  char buf[200];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
 std::string tag_T(double T) { return "ptc_T" + fmt("%g", T); }
 std::string paper(double v) { return std::isnan(v) ? std::string("-") : fmt("%.1f s", v); }
 
@@ -322,6 +318,7 @@ class Se3Campaign final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> make_se3_campaign() { return std::make_unique<Se3Campaign>(); }
 

@@ -44,7 +44,7 @@
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
 namespace adcs::sim::se3 {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr const char* kA8 = "seed 003 §4 (spec A.8)";
 constexpr const char* kT1 = "spec A.8 Table 1 [A]";
@@ -244,6 +244,7 @@ Vec6 rot_trans(double rot, double trans) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 void declare_environment(ParamSet& p) {
   const Se3ScenarioParams d;

@@ -7,7 +7,7 @@
 #include <Eigen/Eigenvalues>
 
 namespace adcs::sim::vehicle {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kDeg = kPiRad / 180.0;
 constexpr double kUnitTol = 1e-6;  //!< axes must be unit within this (then normalised)
@@ -259,6 +259,7 @@ KnowledgeConfig read_knowledge(const Checker& c, const VehicleConfig& v) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 Vec3 ReferenceConfig::target(double t_s) const {
   Vec3 s = sigma_RN;

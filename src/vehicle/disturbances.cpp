@@ -5,10 +5,11 @@
 #include "adcs/math/mrp.hpp"
 
 namespace adcs::sim::vehicle {
-namespace {
+namespace ADCS_UNITY_ID {
 constexpr double kMuEarth_m3_s2 = 3.986004418e14;  // WGS 84 (incl. the atmosphere)
 constexpr double kEarthRadius_m = 6378137.0;       // WGS 84 semi-major axis
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 DisturbanceModel::DisturbanceModel(const DisturbanceConfig& config, const Mat3& J_truth_kgm2) noexcept
     : c_(config), J_(J_truth_kgm2) {

@@ -6,19 +6,15 @@
 
 #include "sim/metrics.hpp"
 #include "sim/sim_error.hpp"
+#include "sim/format.hpp"
 
 namespace adcs::sim::vehicle {
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kRad2Deg = 180.0 / kPiRad;
 
-std::string fmt(const char* f, double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, x);
-  return buf;
-}
-
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::vector<Column> common_columns() {
   std::vector<Column> c{{"t", "s"}, {"att_err_deg", "deg"}};

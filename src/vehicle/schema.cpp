@@ -1,7 +1,7 @@
 #include "vehicle/schema.hpp"
 
 namespace adcs::sim::vehicle {
-namespace {
+namespace ADCS_UNITY_ID {
 
 KeySpec required(std::string_view table, std::string_view key, Shape shape, std::string_view unit,
                  std::string_view only_for = {}) {
@@ -137,6 +137,7 @@ std::vector<TableSpec> build_tables() {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 const std::vector<KeySpec>& key_specs() {
   static const std::vector<KeySpec> keys = build_keys();

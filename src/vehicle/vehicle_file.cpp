@@ -17,7 +17,7 @@ namespace adcs::sim::vehicle {
 
 void fail_at(const std::string& where, const std::string& message) { throw ParamError(where + ": " + message); }
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 //! A value found in the file: its node and where.
 struct Found {
@@ -415,6 +415,8 @@ class Reader {
 };
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 VehicleFile parse_vehicle_file(const std::string& path) { return Reader(path).read(); }
 

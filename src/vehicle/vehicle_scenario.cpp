@@ -7,7 +7,7 @@
 #include "vehicle/vehicle_file.hpp"
 
 namespace adcs::sim::vehicle {
-namespace {
+namespace ADCS_UNITY_ID {
 
 class VehicleScenario final : public Scenario {
  public:
@@ -37,6 +37,7 @@ class VehicleScenario final : public Scenario {
 };
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 std::unique_ptr<Scenario> load_vehicle_file(const std::string& path) {
   auto s = std::make_unique<VehicleScenario>(parse_vehicle_file(path));

@@ -6,7 +6,7 @@
 
 #include "adcs/actuator/limits.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -92,3 +92,5 @@ TEST(ActuatorLimits, RefusalsLeaveTheCommandUntouched) {
   EXPECT_EQ(w, adcs::Vec<7>::Ones());
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -12,7 +12,7 @@
 #include "adcs/actuator/quantizer.hpp"
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::QuantizerChannel;
 using adcs::QuantizerChannelParams;
 using adcs::Status;
@@ -255,3 +255,5 @@ TEST(Quantizer, RejectsInvalidParameters) {
   }
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

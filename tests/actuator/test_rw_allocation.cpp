@@ -4,7 +4,7 @@
 
 #include "adcs/actuator/rw_allocation.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using Alloc = adcs::RwTorqueAllocator<4>;
 
 Alloc::Params params(double limit = 0.2) {
@@ -80,3 +80,5 @@ TEST(RwAllocation, OverflowingRequestIsRefusedNotTurnedIntoNaN) {
   EXPECT_LE(out.u_s_Nm.cwiseAbs().maxCoeff(), 0.2);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

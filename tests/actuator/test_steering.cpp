@@ -11,7 +11,7 @@
 #include "adcs/math/pinv.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using X7 = adcs::Mat<3, 7>;
 
@@ -344,3 +344,5 @@ TEST(SingularityEscape, BoundedNearEverySingularityAndDeterministic) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -13,7 +13,7 @@
 
 #include "adcs/adapt/ppc.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::PerformanceFunction;
 using adcs::PpcBranch;
 using adcs::PpcInverse;
@@ -546,3 +546,5 @@ TEST(PpcReopen, RefusesWhatNoFunnelCanHoldAndChangesNothing) {
   EXPECT_EQ(Ppc(bad).status(), Status::invalid_parameter);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -6,7 +6,7 @@
 
 #include "adcs/adapt/projection.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::ProjectionParams;
 using adcs::Status;
 using V6 = adcs::Vec<6>;
@@ -133,3 +133,5 @@ TEST(Projection, RadialSafeguardRescalesOnlyOutside) {
   EXPECT_FALSE(adcs::radial_safeguard<3>(th, 0.15 + 1e-12));
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -13,7 +13,7 @@
 #include "adcs/adapt/bound_estimator.hpp"
 #include "adcs/adapt/rbf_network.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using Layer = adcs::RbfLayer<6, 7>;
 using V3 = adcs::Vec<3>;
@@ -309,3 +309,5 @@ TEST(BoundEstimator, RobustTermVanishesForZeroEstimateAndIsFiniteForZeroS) {  //
   }
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

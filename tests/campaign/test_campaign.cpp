@@ -12,7 +12,7 @@
 #include "campaign_test_scenario.hpp"
 
 namespace adcs::sim::campaign {
-namespace {
+namespace ADCS_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -223,4 +223,5 @@ TEST_F(Campaign, ARunIsReproducedAloneFromItsIndex) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim::campaign

@@ -12,7 +12,7 @@
 #include "campaign/statistics.hpp"
 
 namespace adcs::sim::campaign {
-namespace {
+namespace ADCS_UNITY_ID {
 
 ParamSet vehicle_params() {
   ParamSet p;
@@ -175,4 +175,5 @@ TEST(Statistics, PercentilesInterpolateLikeNumpy) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim::campaign

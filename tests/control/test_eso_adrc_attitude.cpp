@@ -10,7 +10,7 @@
 #include "adcs/control/eso_adrc_attitude.hpp"
 #include "adcs/math/euler.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::BodyTorque;
 using adcs::EsoAdrcAttitude;
 using adcs::Mat3;
@@ -297,3 +297,5 @@ TEST(EsoAdrcAttitude, ResetBringsBackAFreshInstance) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

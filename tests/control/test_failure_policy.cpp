@@ -15,7 +15,7 @@
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "adcs/reference/sinusoidal_rate.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::FailurePolicy;
 using adcs::Status;
@@ -123,3 +123,5 @@ TEST(FailurePolicy, PidAndAdrcZeroOrHold) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -11,7 +11,7 @@
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using Ctrl = adcs::HybridAdaptive<4, 3>;
 using Plant = adcs::VscmgCtrlPlant<4, 3>;
 using adcs::Status;
@@ -395,3 +395,5 @@ TEST(HybridAdaptive, FailedActuatorIsNeverCommandedAndTrackingContinues) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

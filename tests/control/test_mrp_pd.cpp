@@ -6,7 +6,7 @@
 
 #include "adcs/control/mrp_pd.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using Ctrl = adcs::MrpPd<4>;
 
 Ctrl::Params params() {
@@ -139,3 +139,5 @@ TEST(MrpPd, RefusesMissingOrUnphysicalParameters) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -7,7 +7,7 @@
 
 #include "adcs/control/nonsingular_power.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::NonsingularPower;
 using adcs::NonsingularPowerParams;
 
@@ -73,3 +73,5 @@ TEST(NonsingularPower, SigAndComponentwiseAndInvalid) {
   }
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -13,7 +13,7 @@
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using adcs::Vec3;
 using Plant = adcs::FlexibleSpacecraft<2, 4>;
@@ -346,3 +346,5 @@ TEST(PpcNeural, RefusesAForgottenInertia) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

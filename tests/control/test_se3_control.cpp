@@ -12,7 +12,7 @@
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Se3DesiredState;
 using adcs::Se3ScenarioParams;
 using adcs::Se3Spacecraft;
@@ -179,3 +179,5 @@ TEST(FtsmcSe3, SlidingVariableAndErrorConverge) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -9,7 +9,7 @@
 #include "adcs/core/failure_policy.hpp"
 #include "adcs/core/types.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 
 // A minimal conforming component: a discrete integrator y += T u with a clamp, refusing NaN.
@@ -124,3 +124,5 @@ TEST(Component, TheShapeAndItsFailureSemantics) {
   EXPECT_EQ(out.y, 0.0);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

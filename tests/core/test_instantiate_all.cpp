@@ -134,7 +134,7 @@ template VscmgDeviation<4, 3> rigid_mounting_deviation<4, 3>(const VscmgGeometry
 }  // namespace adcs
 #endif  // ADCS_INSTANTIATE_ALL
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 
 // Construction status of the instantiated classes from their default parameters: those whose
@@ -164,3 +164,5 @@ TEST(InstantiateAll, DefaultParametersGiveTheDocumentedConstructionStatus) {
   EXPECT_EQ((adcs::FlexibleSpacecraft<2, 4>(adcs::flexible_params_seed002()).status()), Status::ok);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -49,7 +49,7 @@
 #include "adcs/reference/sinusoidal_rate.hpp"
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Mat3;
 using adcs::Status;
 using adcs::Vec3;
@@ -911,3 +911,5 @@ TEST(ParameterValidationReference, SinusoidalRateDefaultIsSeed001AndRefusals) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

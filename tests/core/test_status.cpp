@@ -12,7 +12,7 @@
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::Status;
 
@@ -240,3 +240,5 @@ TEST(AllFinite, DetectsNanAndInfInEveryPosition) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

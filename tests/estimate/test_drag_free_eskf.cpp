@@ -14,7 +14,7 @@
 #include "adcs/math/pinv.hpp"
 #include "drag_free_test_params.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using namespace adcs::test::drag_free;  // discrete(), eskf_params(), esf_params(), Status, Vec3, Mat3, Ix
 
 TEST(DragFreeEskf, CovarianceStaysSymmetricPsdThroughFusionB11_4AndFusionB11_7) {
@@ -210,3 +210,5 @@ TEST(DragFreeEskf, NonFiniteMeasurementIsReportedAsSuchWhateverTheBlocks) {
   EXPECT_EQ(f.covariance(), minus_I);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

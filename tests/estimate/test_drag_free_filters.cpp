@@ -16,7 +16,7 @@
 #include "adcs/estimate/fusion.hpp"
 #include "drag_free_test_params.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using namespace adcs::test::drag_free;  // discrete(), eskf_params(), esf_params(), Status, Vec3, Mat3, Ix
 
 TEST(SaturatedEsf, ReducesToAKalmanFilterWithoutSaturationB11_5) {
@@ -267,3 +267,5 @@ TEST(Adrc, CommandsAreClippedToTheCubeAndBadInputHeldB11_11) {
   EXPECT_NEAR(u.F_Csc_N(0), -2e-3, 1e-15);   // F_Csc = 0 + 0 − F̂_Dsc
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

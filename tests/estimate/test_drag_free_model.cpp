@@ -10,7 +10,7 @@
 
 #include "drag_free_test_model.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using namespace adcs::test::drag_free;  // discrete(), Status, Vec3, Mat3, Ix
 
 TEST(DragFreeModel, PerAxisModelIsThe27StateModelRestrictedB11_2) {
@@ -71,3 +71,5 @@ TEST(DragFreeModel, ExtendedModelIsObservableB11_3) {
   }
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

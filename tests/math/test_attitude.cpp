@@ -15,7 +15,7 @@
 #include "adcs/math/quaternion.hpp"
 #include "adcs/math/so3.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::Mat3;
 using adcs::QuaternionSF;
@@ -735,3 +735,5 @@ TEST(Euler, MrpRoundTripsThroughTheDcm) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

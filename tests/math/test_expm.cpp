@@ -27,7 +27,7 @@
 #include <cstdio>
 #endif
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::Mat;
 using adcs::Status;
@@ -611,3 +611,5 @@ TEST(Zoh, OutputsMayAliasInputs) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -23,7 +23,7 @@
 #include "adcs/math/pinv.hpp"
 #include "adcs/math/place.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::Mat;
 using adcs::Status;
@@ -754,3 +754,5 @@ TYPED_TEST(PlaceRandom, NonConjugateOrNonFinitePolesLeaveKUntouched) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

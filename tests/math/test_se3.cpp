@@ -11,7 +11,7 @@
 
 #include "adcs/math/se3.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::Mat3;
 using adcs::Mat6;
@@ -443,3 +443,5 @@ TEST(Se3, MatrixFreeAdjointProductsMatchTheMatrices) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -23,7 +23,7 @@
 
 #include "adcs/math/truncated_normal.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::Status;
 using adcs::TruncatedMoments;
@@ -493,3 +493,5 @@ TEST(TruncatedNormal, TwoSidedRejectsBadInputAndLeavesOutputUntouched) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -23,7 +23,7 @@
 #include "adcs/plant/flexible_spacecraft.hpp"
 #include "directional_derivative.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using Plant = adcs::FlexibleSpacecraft<2, 4>;
 using Params = adcs::FlexibleSpacecraftParams<2, 4>;
 using adcs::Mat3;
@@ -447,3 +447,5 @@ TEST(FlexibleSpacecraft, LumpedDisturbanceClosesThetaDdotEqualsAPlusBuPlusDbar) 
   }
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

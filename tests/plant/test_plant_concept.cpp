@@ -8,7 +8,7 @@
 
 #include "adcs/adcs.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using adcs::Vec3;
 using adcs::Vec6;
@@ -90,3 +90,5 @@ TEST(PlantConcept, DragFreeAdapterOverOnePeriodIsTheZohModel) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -7,7 +7,7 @@
 #include "adcs/plant/rigid_body_rw.hpp"
 #include "directional_derivative.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using Plant = adcs::RigidBodyRw<4>;
 
 Plant::Params params() {
@@ -103,3 +103,5 @@ TEST(RigidBodyRw, NormalizeKeepsShortSetAndAttitude) {
   EXPECT_FALSE(plant.normalize(x));
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -16,7 +16,7 @@
 #include "se3_rk4.hpp"
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Mat3;
 using adcs::Mat6;
 using adcs::Se3Spacecraft;
@@ -54,6 +54,8 @@ double j2_potential(const Vec3& R, const adcs::OrbitEnvironmentParams& e) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 // ---------------------------------------------------------------------------------------------
 // Gravity, spec §A.11 #11

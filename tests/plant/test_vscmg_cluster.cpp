@@ -11,7 +11,7 @@
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "directional_derivative.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using Full = adcs::VscmgFullPlant<4, 3>;
 using Ctrl = adcs::VscmgCtrlPlant<4, 3>;
 using Geometry = adcs::VscmgGeometry<4, 3>;
@@ -281,3 +281,5 @@ TEST(VscmgCluster, InvalidParametersAreRejected) {
   EXPECT_EQ(Ctrl(good, -adcs::Mat3::Identity()).status(), adcs::Status::invalid_parameter);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

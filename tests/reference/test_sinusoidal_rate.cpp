@@ -3,7 +3,7 @@
 
 #include "adcs/reference/sinusoidal_rate.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::Vec3;
 using adcs::Vec4;
 
@@ -90,3 +90,5 @@ TEST(SinusoidalRateReference, FullPeriodReachesThePrintedPeakAndReturns) {  // S
   EXPECT_LT(s.norm(), 1e-6);                              // 2400 s-periodic: σ_d(2400) ≈ 0
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -16,7 +16,7 @@
 #include "cli_test_fixture.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 namespace fs = std::filesystem;
 
 enum class Mode { ok, throws, no_csv, param_error, partial, dup_metric, chatty };
@@ -300,4 +300,5 @@ TEST(CliOptions, Parse) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim::cli

@@ -9,7 +9,7 @@
 #include "cli/commands.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 std::string refusal(const std::string& command, const std::vector<std::string>& args) {
   try {
@@ -91,4 +91,5 @@ TEST(CliGrammar, TheFirstBadWordIsReported) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim::cli

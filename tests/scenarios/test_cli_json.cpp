@@ -12,7 +12,7 @@
 #include "cli/run_json.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 
 TEST(Json, NumbersArePercent15gOr17gWhenThatIsNeededToReadBack) {
   EXPECT_EQ(json_number(1.0), "1");  // nlohmann's dump(): "1.0"
@@ -125,4 +125,5 @@ TEST(RunJson, MonteCarloSummary) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim::cli

@@ -6,7 +6,7 @@
 #include "scenarios/registry.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 TEST(Registry, EveryScenarioDeclaresDurationAndControlPeriod) {
   const auto problems = registry_problems();
@@ -52,4 +52,5 @@ TEST(Registry, ProblemsAreDetected) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim

@@ -18,7 +18,7 @@
 #include "scenarios/registry.hpp"
 
 namespace adcs::sim::cli {
-namespace {
+namespace ADCS_UNITY_ID {
 namespace fs = std::filesystem;
 
 //! Declares the keys the shared checks look at; reports a used value for a declared key and
@@ -320,4 +320,5 @@ TEST(CliProgress, TerminalShowsLongRunsInPlace) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim::cli

@@ -11,7 +11,7 @@
 #include "scenario_test_util.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 using test::metric;
 
@@ -62,4 +62,5 @@ TEST(CmgSingularityEscape, RefusesBadParameters) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim

@@ -11,7 +11,7 @@
 
 #include "scenario_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::RunResult;
 using adcs::sim::test::expect_claims_hold;
 using adcs::sim::test::expect_rows_well_formed;
@@ -85,3 +85,5 @@ TEST(CrossFlexibleEsoAdrc, RefusesASampledLoopBeyondItsLimit) {
   EXPECT_THROW(run("flexible-eso-adrc", {{"omega_c_rad_s", "20"}}), adcs::sim::ParamError);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -12,7 +12,7 @@
 
 #include "scenario_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::RunResult;
 using adcs::sim::test::expect_claims_hold;
 using adcs::sim::test::expect_rows_well_formed;
@@ -86,3 +86,5 @@ TEST(CrossRigidRwPrescribedTime, WritesBothLawsToTheCsvWithUnits) {
   fs::remove_all(dir);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

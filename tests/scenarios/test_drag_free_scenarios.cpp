@@ -10,7 +10,7 @@
 
 #include "scenario_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::Claim;
 using adcs::sim::RunResult;
 using adcs::sim::test::expect_claims_hold;
@@ -114,3 +114,5 @@ TEST(DragFree, AdrcBeatsPidOnXItem5) {
   EXPECT_EQ(paper_verdict(r, "B.9-5"), "reproduced");
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

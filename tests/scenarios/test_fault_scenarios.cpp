@@ -10,7 +10,7 @@
 
 #include "scenario_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::RunResult;
 using adcs::sim::test::expect_claims_hold;
 using adcs::sim::test::metric;
@@ -84,3 +84,5 @@ TEST(FaultScenarios, RateDropoutWithZeroTorqueRecoversThroughTheReopenedFunnel) 
     EXPECT_LT(std::abs(metric(r, std::string("err_final_deg_") + axis)), 0.01) << axis;
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

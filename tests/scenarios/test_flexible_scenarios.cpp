@@ -9,7 +9,7 @@
 
 #include "scenario_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::Claim;
 using adcs::sim::RunResult;
 using adcs::sim::test::metric;
@@ -117,3 +117,5 @@ TEST(FlexiblePpc, SampleRateStudyLimitIsTheStiffSLoop) {
   EXPECT_GT(metric(bad, "err_ss_max_deg"), 1.0);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -7,7 +7,7 @@
 
 #include "scenario_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::ParamSet;
 using adcs::sim::RunResult;
 
@@ -105,7 +105,9 @@ TEST(HybridAref, BaselineMatchesPrototype) {
 }
 }  // namespace
 
-namespace {
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
+
+namespace ADCS_UNITY_ID {
 // --seed N > 0 draws a Mode-A deviation set from our portable generator: same seed, same run
 // bit for bit; another seed, another set.
 TEST(HybridAref, SeedDrawsAReproducibleModeADeviationSet) {
@@ -121,7 +123,9 @@ TEST(HybridAref, SeedDrawsAReproducibleModeADeviationSet) {
 }
 }  // namespace
 
-namespace {
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
+
+namespace ADCS_UNITY_ID {
 // Spec §A.7 S11: with the true Θ and no adaptation, TP-FULL (J(γ) variation, gimbal momentum)
 // still tracks to ~1.5e-7 rad over [100, 800] s: the truth-plant-only mismatch is negligible.
 TEST(HybridAref, OracleOnTheFullPlantS11) {
@@ -130,7 +134,9 @@ TEST(HybridAref, OracleOnTheFullPlantS11) {
 }
 }  // namespace
 
-namespace {
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
+
+namespace ADCS_UNITY_ID {
 // Beyond the paper: the paper's explicit-Euler adaptation is unstable at T_c = 10 ms (spec §A.5:
 // ≥ 5 ms); the normalized step (adapt/normalized_step.hpp) is stable at 10 ms and at 10 Hz with
 // the 1 ms accuracy (measured 1.245e-4 / 1.225e-4 rad vs 1.246e-4 at 1 ms).
@@ -190,3 +196,5 @@ TEST(HybridAref, ActuatorLimitsAreFlaggedWhenHit) {
   EXPECT_TRUE(flagged);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

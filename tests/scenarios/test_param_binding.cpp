@@ -1,7 +1,7 @@
 // Parameters declared once and bound to fields (scenarios/param_binding.hpp).
 #include <gtest/gtest.h>
 #include "scenarios/param_binding.hpp"
-namespace {
+namespace ADCS_UNITY_ID {
 struct Cfg {
   double K = 0; adcs::Vec3 P = adcs::Vec3::Zero(); adcs::Mat3 J = adcs::Mat3::Zero(); std::string integ;
   template <class F> void visit(F&& f) {
@@ -12,6 +12,7 @@ struct Cfg {
   }
 };
 }
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 TEST(ParamBinding, DeclaredOnceReadIntoFields) {
   adcs::sim::ParamSet p;
   adcs::sim::declare_config<Cfg>(p);

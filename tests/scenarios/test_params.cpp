@@ -8,7 +8,7 @@
 #include "scenarios/scenario.hpp"
 
 namespace adcs::sim {
-namespace {
+namespace ADCS_UNITY_ID {
 
 ParamSet make() {
   ParamSet p;
@@ -235,4 +235,5 @@ TEST(Params, FormatValue) {
 }
 
 }  // namespace
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 }  // namespace adcs::sim

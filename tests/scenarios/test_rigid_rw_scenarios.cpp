@@ -9,7 +9,7 @@
 #include "scenario_test_util.hpp"
 #include "scenarios/rigid_rw_common.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::ParamSet;
 using adcs::sim::RunContext;
 using adcs::sim::RunResult;
@@ -198,3 +198,5 @@ TEST(CubesatPpc10Hz, LargeDrawnInitialErrorsReopenAndSettle) {
   }
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

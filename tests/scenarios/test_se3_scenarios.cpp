@@ -15,7 +15,7 @@
 
 #include "scenario_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::Claim;
 using adcs::sim::PaperVerdict;
 using adcs::sim::RunResult;
@@ -312,3 +312,5 @@ TEST(Se3Scenarios, BadOptionsAreParamErrors) {
   EXPECT_THROW(run("se3-ftsmc", {{"uncertainty_sign", "0"}}), adcs::sim::ParamError);
 }
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

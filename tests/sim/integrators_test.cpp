@@ -13,7 +13,7 @@
 #include "sim/rk4_integrator.hpp"
 #include "sim/sampled_data.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::sim::CvodeIntegrator;
 using adcs::sim::CvodeOptions;
@@ -61,6 +61,8 @@ struct NanAfterHalfSecond {
 
 }  // namespace
 
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
+
 // Sophus-style explicit instantiation: every member of the templates is compiled.
 template class adcs::sim::CvodeIntegrator<DoubleIntegrator>;
 template class adcs::sim::CvodeIntegrator<VanDerPol>;
@@ -69,7 +71,7 @@ static_assert(adcs::sim::has_jacobian_v<DoubleIntegrator>);
 static_assert(!adcs::sim::has_jacobian_v<VanDerPol>);
 static_assert(!adcs::sim::has_normalize_v<DoubleIntegrator>);
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 // Drives `integrator` through the ZOH loop with pseudo-random piecewise-constant accelerations and
 // returns the largest deviation from the exact discrete solution over all samples.
@@ -99,6 +101,8 @@ double max_error_vs_exact_zoh(Integrator& integrator) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 TEST(CvodeIntegrator, AdamsMatchesExactZohDoubleIntegrator) {
   const DoubleIntegrator plant;

@@ -11,7 +11,7 @@
 namespace m = adcs::sim::metrics;
 using adcs::sim::SimError;
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -22,6 +22,8 @@ std::vector<double> times(std::size_t n, double dt) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 TEST(Metrics, WindowMaxAndRms) {
   const std::vector<double> t = times(1001, 0.01);  // 0 .. 10 s

@@ -16,7 +16,7 @@
 
 #include "sim/recorder.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::sim::Column;
 using adcs::sim::CsvRecorder;
@@ -48,6 +48,8 @@ std::string temp_path(const char* name) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 TEST(CsvRecorder, HeaderDecimationFinalRowAndExactRoundTrip) {
   const std::string path = temp_path("adcs_sim_recorder_test.csv");

@@ -7,7 +7,7 @@
 #include "sim/rk4_integrator.hpp"
 #include "sim/sampled_data.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::sim::SampledDataOptions;
 using adcs::sim::SimError;
@@ -56,6 +56,8 @@ Trace run(const FlippingIntegrator& plant, Integrator& integrator, FlippingInteg
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 TEST(SampledData, SampleTimesCountsPartialIntervalAndNormalize) {
   int normalize_calls = 0;

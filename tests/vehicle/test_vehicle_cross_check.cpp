@@ -16,7 +16,7 @@
 #include "adcs/core/types.hpp"
 #include "vehicle_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::RunContext;
 using adcs::sim::RunResult;
 using namespace adcs::sim::test;
@@ -135,3 +135,5 @@ TEST(VehicleCrossCheck, CubesatFileAsWrittenIsCubesatMrpPdToRoundOff) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

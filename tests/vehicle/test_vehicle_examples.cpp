@@ -7,7 +7,7 @@
 
 #include "vehicle_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::RunResult;
 using adcs::sim::test::example_path;
 using adcs::sim::test::metric;
@@ -51,3 +51,5 @@ TEST(VehicleExamples, CmgImagerMeetsItsRequirements) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -11,7 +11,7 @@
 #include "vehicle/schema.hpp"
 #include "vehicle_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::ParamError;
 using adcs::sim::ParamSet;
 using namespace adcs::sim::test;
@@ -264,3 +264,5 @@ TEST(VehicleDocs, EveryKeyIsDocumented) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -12,7 +12,7 @@
 #include "vehicle/plants.hpp"
 #include "vehicle/sensors.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using namespace adcs;
 using namespace adcs::sim::vehicle;
 
@@ -211,3 +211,5 @@ TEST(VehiclePlants, CmgPlantAddsTheExternalTorqueToTheMomentumRate) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -10,7 +10,7 @@
 #include "adcs/core/types.hpp"
 #include "vehicle_test_util.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::sim::RunResult;
 using namespace adcs::sim::test;
 
@@ -170,3 +170,5 @@ TEST(VehicleRuns, DispersedTruthLeavesTheKnowledgeNominal) {
 }
 
 }  // namespace
+
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -27,18 +27,27 @@ inline DragFreeEskfBase::Partition drag_free_attitude_partition() noexcept {
   return part;
 }
 
-//! Parameters: EskfParams<27, 9, 9, 9> (the model matrices and R have no default; X̂_0, P_0 are
-//! spec §B.4's), usually from drag_free_discretize() as the dragfree-* scenarios build them.
-class DragFreeEskf : public DragFreeEskfBase {
+namespace detail {
+//! DragFreeEskf itself, a template over its base only so that including this header instantiates
+//! nothing: g++ instantiates every template that a non-template inline function calls, used or
+//! not, and the two Eskf blocks' constructors (their parameter checks) cost ~18 CPU-s in every
+//! translation unit that included this header (docs/DECISIONS.md, "Unity batches").
+template <class Base>
+class DragFreeEskf : public Base {
  public:
-  explicit DragFreeEskf(const Params& p) noexcept : DragFreeEskfBase(p, drag_free_attitude_partition()) {}
+  explicit DragFreeEskf(const typename Base::Params& p) noexcept : Base(p, drag_free_attitude_partition()) {}
 
   //! ok, or invalid_parameter: an unset (NaN) or invalid matrix, or parameters that couple the
   //! attitude and translation blocks (PartitionedEskf::status). A refused filter answers
   //! invalid_parameter from predict() and update() and leaves its estimate untouched;
   //! fuse_axis() refuses it too.
-  Status status() const noexcept { return DragFreeEskfBase::status(); }
+  Status status() const noexcept { return Base::status(); }
 };
+}  // namespace detail
+
+//! Parameters: EskfParams<27, 9, 9, 9> (the model matrices and R have no default; X̂_0, P_0 are
+//! spec §B.4's), usually from drag_free_discretize() as the dragfree-* scenarios build them.
+using DragFreeEskf = detail::DragFreeEskf<DragFreeEskfBase>;
 
 ADCS_ASSERT_COMPONENT(DragFreeEskf);
 

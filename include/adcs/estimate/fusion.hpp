@@ -12,6 +12,8 @@
 // seed 004 eq. (41) as printed zeroes the cross-covariance between the three fused states and the other 24;
 // kept. The selection is applied by index, in place (exactly Γ⁺ = Γᵀ; tests compare with the
 // matrix form).
+#include <type_traits>
+
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/estimate/drag_free_eskf.hpp"
@@ -39,14 +41,19 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
 //! (nothing changed) if either filter holds a non-finite estimate, invalid_parameter (nothing
 //! changed) for a bad axis or a refused filter (status() != ok: it has no valid estimate to give
 //! or to receive).
-[[nodiscard]] inline Status fuse_axis(DragFreeEskf& alg1, SaturatedEsf& alg2, int axis,
-                                      FusedCovariance mode = FusedCovariance::block_diagonal) noexcept {
+//! A template only so that including this header instantiates nothing (see detail::DragFreeEskf);
+//! Alg1 is DragFreeEskf and Alg2 SaturatedEsf.
+template <class Alg1 = DragFreeEskf, class Alg2 = SaturatedEsf>
+[[nodiscard]] Status fuse_axis(Alg1& alg1, Alg2& alg2, int axis,
+                               FusedCovariance mode = FusedCovariance::block_diagonal) noexcept {
+  static_assert(std::is_same_v<Alg1, DragFreeEskf> && std::is_same_v<Alg2, SaturatedEsf>,
+                "fuse_axis: Algorithm 3 fuses the drag-free ESKF with a saturated-accelerometer filter");
   if (axis < 0 || axis > 2 || alg1.status() != Status::ok || alg2.status() != Status::ok)
     return Status::invalid_parameter;
   const std::array<int, 3> idx{DragFreeIndex::r + axis, DragFreeIndex::r_dot + axis, DragFreeIndex::F_Dsc + axis};
   const Vec<27>& x1 = alg1.state();
   const Vec3 X1(x1(idx[0]), x1(idx[1]), x1(idx[2]));         // seed 004 eq. (35)
-  const Mat3 P1s = alg1.covariance_of<3>(idx);               // seed 004 eq. (36)
+  const Mat3 P1s = alg1.template covariance_of<3>(idx);               // seed 004 eq. (36)
   const Vec3& X2 = alg2.state();
   const Mat3& P2 = alg2.covariance();
   const Vec3 Xo(X1(0), X1(1), X2(2));                        // seed 004 eqs. (37)-(38)
@@ -60,7 +67,7 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
     keep_psd<3>(Po);
   }
   if (!all_finite(Xo) || !all_finite(Po) || !all_finite(x1) || !all_finite(P1s)) return Status::non_finite_input;
-  if (alg1.replace_substate<3>(idx, Xo, Po) != Status::ok) return Status::non_finite_input;  // seed 004 eqs. (40)-(41)
+  if (alg1.template replace_substate<3>(idx, Xo, Po) != Status::ok) return Status::non_finite_input;  // seed 004 eqs. (40)-(41)
   return alg2.set_estimate(Xo, Po);                          // seed 004 eqs. (42)-(43)
 }
 
