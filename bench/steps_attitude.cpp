@@ -55,7 +55,7 @@ using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.t
 
 namespace adcs::bench {
 namespace ADCS_UNITY_ID {
-const StepEntry kSteps[] = {
+const StepEntry kAttitudeSteps[] = {
     ADCS_STEP_ENTRY(MrpPd),
     ADCS_STEP_ENTRY(RwAllocation),
     ADCS_STEP_ENTRY(HybridAdaptive),
@@ -63,5 +63,5 @@ const StepEntry kSteps[] = {
 };
 }  // namespace
 using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
-StepTable attitude_steps() noexcept { return step_table(kSteps); }
+StepTable attitude_steps() noexcept { return step_table(kAttitudeSteps); }
 }  // namespace adcs::bench

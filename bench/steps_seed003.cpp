@@ -9,7 +9,7 @@ ADCS_STEP_BENCHMARK(SE3Ftsmc);  // seed 003 FTSMC baseline
 ADCS_STEP_BENCHMARK(CompositeQuantizer);  // seed 003 sat + quantizer, 6 channels
 
 namespace ADCS_UNITY_ID {
-const StepEntry kSteps[] = {
+const StepEntry kSeed003Steps[] = {
     ADCS_STEP_ENTRY(SE3PrescribedTime),
     ADCS_STEP_ENTRY(SE3Ftsmc),
     ADCS_STEP_ENTRY(CompositeQuantizer),
@@ -17,5 +17,5 @@ const StepEntry kSteps[] = {
 }  // namespace
 
 using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
-StepTable seed003_steps() noexcept { return step_table(kSteps); }
+StepTable seed003_steps() noexcept { return step_table(kSeed003Steps); }
 }  // namespace adcs::bench

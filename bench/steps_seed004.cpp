@@ -12,7 +12,7 @@ ADCS_STEP_BENCHMARK(Pid);  // seed 004 PID baseline
 ADCS_STEP_BENCHMARK(DragFreeAdrc);  // seed 004 whole sample: Algorithms 1-3 + ADRC
 
 namespace ADCS_UNITY_ID {
-const StepEntry kSteps[] = {
+const StepEntry kSeed004Steps[] = {
     ADCS_STEP_ENTRY(DragFreeEskf),
     ADCS_STEP_ENTRY(SaturatedEsf),
     ADCS_STEP_ENTRY(Fusion),
@@ -23,5 +23,5 @@ const StepEntry kSteps[] = {
 }  // namespace
 
 using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
-StepTable seed004_steps() noexcept { return step_table(kSteps); }
+StepTable seed004_steps() noexcept { return step_table(kSeed004Steps); }
 }  // namespace adcs::bench
