@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# "Run the tests" (README command 2; .ci/run calls exactly this). About 15 minutes on 2 cores
+# "Run the tests" (README command 2; .ci/run calls exactly this). About 29 minutes on 2 cores
 # from a fresh clone with the packages installed (the table at the end gives each phase).
 #   1. install missing Debian packages (tools/setup-deps.sh);
 #   2. Release tree (g++, -Werror), BUILD_DIR: the papers' closed loops and their claims
 #      (adcs_claim_tests), the Cortex-M7 checks (every public header, the instantiation units, the
-#      host/QEMU replays), the callgrind instruction counts, and adcs-sim / adcs-bench;
+#      host/QEMU replays), the callgrind instruction counts, and adcs-bench (adcs-sim only when run-main asks for it);
 #   3. ASan + UBSan tree (clang++-14, -Werror), build-asan (tools/run-sanitizers.sh): every unit,
 #      no-allocation, harness, CLI, parameter, foundation- and fault-scenario and install test,
 #      the example programs (examples/, which check their own results),
