@@ -6,16 +6,20 @@
 #include <benchmark/benchmark.h>
 
 #ifdef ADCS_BENCH_HAVE_SIM
-#include "scenarios/registry.hpp"
+#include <memory>
+
+#include "scenarios/scenario.hpp"
+
+namespace adcs::sim {
+// src/scenarios/rigid_rw_mrp_pd.cpp (library adcs_scenarios_rigid_rw), as registry.cpp declares it:
+// the bench links that scenario alone, not the registry of every paper's closed loop.
+std::unique_ptr<Scenario> make_rigid_rw_mrp_pd();
+}  // namespace adcs::sim
 
 namespace {
 // One 300 s closed-loop run of rigid-rw-mrp-pd (CVODE Adams, 10 Hz ZOH, no file output).
 void BM_RigidRw_300s(benchmark::State& state) {
-  const adcs::sim::Scenario* s = adcs::sim::find_scenario("rigid-rw-mrp-pd");
-  if (!s) {
-    state.SkipWithError("rigid-rw-mrp-pd not registered");
-    return;
-  }
+  const std::unique_ptr<adcs::sim::Scenario> s = adcs::sim::make_rigid_rw_mrp_pd();
   adcs::sim::ParamSet params;
   s->declare(params);
   params.set("duration_s", "300");

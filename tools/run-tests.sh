@@ -32,7 +32,7 @@ if [ "$quick" -eq 1 ]; then
   build=${1:-"$root/build-quick"}
   # clang compiles the Eigen-heavy tests ~3x faster than g++; -O2 with asserts armed (no NDEBUG).
   phase configure cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
-    -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS_DEBUG=-O2 \
+    -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS_DEBUG=-O2 -DADCS_WERROR=ON \
     -DADCS_BUILD_BENCH=OFF -DADCS_TARGET_CHECK=OFF -DADCS_FUZZ=OFF
   phase build cmake --build "$build" -j "$jobs"
   phase ctest ctest --test-dir "$build" --output-on-failure -j "$jobs" -L 'unit|component|nomalloc|sim|examples|docs'
@@ -40,8 +40,13 @@ if [ "$quick" -eq 1 ]; then
 fi
 
 build=${1:-"$root/build"}
+# clang++-14 like the other trees: the bench's step fixtures and the host replay cores took ~540
+# g++ CPU-s here, about half that with clang (docs/DECISIONS.md, "CI under 20 minutes"). g++
+# still compiles every flight header with -Werror: arm-none-eabi-g++ 12 (the host's g++
+# version) in the Cortex-M7 units and replays.
 phase configure cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=ON -DADCS_BUILD_EXAMPLES=OFF
+  -DCMAKE_CXX_COMPILER=clang++-14 -DADCS_WERROR=ON \
+  -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=OFF -DADCS_BUILD_EXAMPLES=OFF
 # The Cortex-M7 programs (ExternalProject, not in ALL) are built here with the rest rather than
 # inside ctest's target_compile_check, so the build phase shows their time and both cores share
 # them with the host objects.
