@@ -2,10 +2,9 @@
 # The flight and ground test groups under AddressSanitizer + LeakSanitizer +
 # UndefinedBehaviorSanitizer (clang++-14), plus the libFuzzer harnesses (ADCS_FUZZ=ON: ctest label
 # fuzz, tests/fuzz/CMakeLists.txt): every unit, property, harness, CLI, parameter, foundation- and
-# fault-scenario, no-allocation and install-consumer test, with any sanitizer report fatal
-# (halt_on_error, -fno-sanitize-recover=undefined). The papers' closed loops (adcs_claim_tests)
-# run in the Release tree only (preset asan: ADCS_TESTS_CLAIMS=OFF; docs/DECISIONS.md). Called by
-# tools/run-tests.sh after the Release suite.
+# fault-scenario, no-allocation and install-consumer test, and the papers' closed loops and their
+# claims (adcs_claim_tests), with any sanitizer report fatal (halt_on_error,
+# -fno-sanitize-recover=undefined). Called by tools/run-tests.sh after the Release suite.
 #   clang++-14, not g++: the same -O1 ASan+UBSan build of the Eigen-heavy tests compiles ~3-4x
 #        faster (measured per translation unit: g++ -O1 -g 138 s, clang++ -O1 -g 36 s), which is
 #        what lets the suite run in CI; it also puts a second compiler's warnings (-Werror) on

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# "Run the tests" (README command 2; .ci/run calls exactly this). About 29 minutes on 2 cores
-# from a fresh clone with the packages installed (the table at the end gives each phase).
+# "Run the tests" (README command 2; .ci/run calls exactly this). Under 20 minutes on 2 cores
+# from a fresh clone with the packages installed (the table at the end gives each phase; README
+# has the measured figure).
 #   1. install missing Debian packages (tools/setup-deps.sh);
-#   2. Release tree (g++, -Werror), BUILD_DIR: the papers' closed loops and their claims
-#      (adcs_claim_tests), the Cortex-M7 checks (every public header, the instantiation units, the
-#      host/QEMU replays), the callgrind instruction counts, and adcs-bench (adcs-sim only when run-main asks for it);
+#   2. Release tree (clang++-14, -Werror), BUILD_DIR: the Cortex-M7 checks (every public header,
+#      the instantiation units, the host/QEMU replays and their instruction counts), the callgrind
+#      instruction counts and adcs-bench (adcs-sim only when run-main asks for it);
 #   3. ASan + UBSan tree (clang++-14, -Werror), build-asan (tools/run-sanitizers.sh): every unit,
 #      no-allocation, harness, CLI, parameter, foundation- and fault-scenario and install test,
-#      the example programs (examples/, which check their own results),
-#      and the four libFuzzer harnesses replaying their committed corpora plus new inputs.
+#      the papers' closed loops and their claims (adcs_claim_tests), the example programs
+#      (examples/, which check their own results), and the five libFuzzer harnesses replaying
+#      their committed corpora plus new inputs.
 # Each test is built in the one tree where it is needed (docs/DECISIONS.md, "Each test in one
 # tree"); no test runs in neither. Every phase prints its wall and CPU time, and a table of all
 # of them closes the run.

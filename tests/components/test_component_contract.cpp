@@ -11,7 +11,7 @@
 
 #include "component_fixtures.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::test::OutputValues;  // a component's output as numbers (component_list.hpp)
 
@@ -82,4 +82,5 @@ TYPED_TEST(ComponentContract, SameInputsSameOutputsBitForBit) {
   for (std::size_t k = 0; k < oa.size(); ++k) EXPECT_TRUE(oa[k].same_bits(ob[k])) << "step " << k;
 }
 
-}  // namespace
+}  // namespace ADCS_UNITY_ID
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -17,7 +17,7 @@
 #include "counting_new.hpp"
 #include "step_fixtures.hpp"  // bench/: the steps adcs-bench times
 
-namespace {
+namespace ADCS_UNITY_ID {
 using adcs::test::NoAllocScope;
 
 TEST(NoMalloc, GuardIsArmed) {
@@ -228,7 +228,8 @@ TEST(NoMalloc, EveryBenchmarkedStep) {
   EXPECT_EQ(allocations_of_100_steps<fx::CompositeQuantizerStep>(), 0);
 }
 
-}  // namespace
+}  // namespace ADCS_UNITY_ID
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
