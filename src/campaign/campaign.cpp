@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <memory>
 #include <mutex>
@@ -204,12 +205,13 @@ CampaignCounts run_campaign(const CampaignPlan& plan, const ExecOptions& exec) {
   if (exists && !exec.resume)
     throw ParamError(log_path.string() + " exists: add --resume to continue that campaign, or choose another --out");
   if (exists) {
-    const LogContents old = read_log(log_path.string());
+    // Only the run indices are kept (not the rows): resuming a large campaign costs no more memory
+    // than running it.
+    const LogContents old = scan_log(log_path.string(), [&](RunRow&& r, const RowSpan&) { done.insert(r.run); });
     if (old.header.campaign_id != header.campaign_id || old.header.shard_count != exec.shard_count ||
         old.header.shard_index != exec.shard_index)
       throw ParamError("--resume: " + log_path.string() + " belongs to another campaign or shard (campaign " +
                        old.header.campaign_id + ", this one " + header.campaign_id + ")");
-    for (const RunRow& r : old.rows) done.insert(r.run);
     valid_bytes = old.valid_bytes;
   }
   std::vector<std::uint64_t> pending;
@@ -221,14 +223,19 @@ CampaignCounts run_campaign(const CampaignPlan& plan, const ExecOptions& exec) {
   CampaignCounts counts;
   counts.resumed = mine - pending.size();
 
-  // The first pending run runs alone, before any file is written: a series column or a
-  // scenario that cannot run at all is then refused with nothing on disk.
+  // The first pending run decides whether the campaign may run at all: a series column or a
+  // scenario that cannot run is refused with nothing on disk. It runs in the pool like any other
+  // (run alone first, it made --jobs 2 barely faster than --jobs 1 on a campaign of a few long
+  // runs): the workers start on the next runs meanwhile, and what finishes before it is decided
+  // is held in memory (about kMaxHeld rows at most: a worker then waits) and logged once it passed.
+  // The log's line order is completion order anyway; the tables are built sorted by run index.
   std::unique_ptr<LogWriter> log;
   std::unique_ptr<SeriesWriter> series_out;
   std::mutex mu;
+  std::condition_variable gate_cv;
   Progress progress(exec.progress, exec.progress_is_terminal, mine, counts.resumed);
-  auto record = [&](const RunRow& row, const SeriesRecord* s) {
-    std::lock_guard<std::mutex> lock(mu);
+  const bool want_series = !plan.series.empty();
+  auto record = [&](const RunRow& row, const SeriesRecord* s) {  // with mu held
     if (s && row.status == RunStatus::ok) series_out->append(*s);  // series first: an orphan record is ignored
     log->append(row);
     if (row.status == RunStatus::ok) ++counts.ok;
@@ -236,49 +243,76 @@ CampaignCounts run_campaign(const CampaignPlan& plan, const ExecOptions& exec) {
     if (row.status == RunStatus::failed) ++counts.failed;
     progress.add(row);
   };
-  const bool want_series = !plan.series.empty();
-  if (!pending.empty()) {
-    SeriesRecord first_series;
-    const RunRow first = execute_run(plan, pending.front(), want_series ? &first_series : nullptr);
-    if (first.status == RunStatus::invalid && first.error.rfind("--series", 0) == 0) throw ParamError(first.error);
+  // Why the first run refuses the campaign (a ParamError), or "" when it may run.
+  auto refusal = [&](const RunRow& first) -> std::string {
+    if (first.status == RunStatus::invalid && first.error.rfind("--series", 0) == 0) return first.error;
     // Without dispersions every run has the nominal parameters: one refused is all refused, and
     // that is a bad command line (as `run` would say), not a campaign of invalid runs.
-    if (first.status == RunStatus::invalid && plan.dispersions.empty()) throw ParamError(first.error);
+    if (first.status == RunStatus::invalid && plan.dispersions.empty()) return first.error;
     if (first.status == RunStatus::ok && !plan.rank_metric.empty()) {
       bool found = false;
       for (const auto& m : first.metrics) found = found || m.first == plan.rank_metric;
-      if (!found) throw ParamError("--rank-by: " + plan.name + " has no metric '" + plan.rank_metric + "'");
+      if (!found) return "--rank-by: " + plan.name + " has no metric '" + plan.rank_metric + "'";
     }
-    fs::create_directories(exec.out_dir);
-    log = exists ? std::make_unique<LogWriter>(log_path.string(), valid_bytes)
-                 : std::make_unique<LogWriter>(log_path.string(), header);
-    if (want_series) series_out = std::make_unique<SeriesWriter>(series_path.string(), exists);
-    record(first, want_series ? &first_series : nullptr);
-
-    std::atomic<std::size_t> next{1};
-    std::exception_ptr error;
+    return "";
+  };
+  if (!pending.empty()) {
+    constexpr std::size_t kMaxHeld = 64;
+    struct Held {
+      RunRow row;
+      SeriesRecord series;
+    };
+    std::vector<Held> held;  // finished before the first run was decided
+    bool passed = false;     // the first run is decided and the campaign may run (files open)
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr error;  // a refusal, or an I/O failure of the log: stop the campaign
     auto worker = [&] {
       for (;;) {
-        const std::size_t i = next.fetch_add(1);
-        if (i >= pending.size()) return;
         {
-          std::lock_guard<std::mutex> lock(mu);
+          std::unique_lock<std::mutex> lock(mu);
+          gate_cv.wait(lock, [&] { return passed || error || held.size() < kMaxHeld; });
           if (error) return;
         }
+        const std::size_t i = next.fetch_add(1);  // index 0, the first pending run, is taken first
+        if (i >= pending.size()) return;
         SeriesRecord s;
+        RunRow row;
+        std::exception_ptr run_error;  // execute_run records a run's own failure; anything else stops
         try {
-          const RunRow row = execute_run(plan, pending[i], want_series ? &s : nullptr);
-          record(row, want_series ? &s : nullptr);
-        } catch (...) {  // an I/O failure of the log: stop the campaign (what is logged stays)
-          std::lock_guard<std::mutex> lock(mu);
-          if (!error) error = std::current_exception();
+          row = execute_run(plan, pending[i], want_series ? &s : nullptr);
+        } catch (...) {
+          run_error = std::current_exception();
+        }
+        std::lock_guard<std::mutex> lock(mu);
+        if (error) return;
+        try {
+          if (run_error) std::rethrow_exception(run_error);
+          if (i == 0) {
+            if (const std::string why = refusal(row); !why.empty()) throw ParamError(why);
+            fs::create_directories(exec.out_dir);
+            log = exists ? std::make_unique<LogWriter>(log_path.string(), valid_bytes)
+                         : std::make_unique<LogWriter>(log_path.string(), header);
+            if (want_series) series_out = std::make_unique<SeriesWriter>(series_path.string(), exists);
+            record(row, want_series ? &s : nullptr);
+            for (const Held& h : held) record(h.row, want_series ? &h.series : nullptr);
+            std::vector<Held>().swap(held);
+            passed = true;
+            gate_cv.notify_all();
+          } else if (passed) {
+            record(row, want_series ? &s : nullptr);
+          } else {
+            held.push_back({std::move(row), std::move(s)});
+          }
+        } catch (...) {  // what is logged stays
+          error = std::current_exception();
+          gate_cv.notify_all();
           return;
         }
       }
     };
-    const unsigned n = std::min<unsigned>(exec.jobs, static_cast<unsigned>(std::max<std::size_t>(1, pending.size() - 1)));
+    const std::size_t n = std::min<std::size_t>(exec.jobs, pending.size());
     std::vector<std::thread> threads;
-    for (unsigned t = 0; t < n; ++t) threads.emplace_back(worker);
+    for (std::size_t t = 0; t < n; ++t) threads.emplace_back(worker);
     for (auto& t : threads) t.join();
     if (error) std::rethrow_exception(error);
     log.reset();

@@ -8,7 +8,6 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include "campaign/seeding.hpp"
@@ -95,24 +94,27 @@ std::string campaign_id_of(const Json& identity) {
 }
 
 LogContents read_log(const std::string& path) {
+  std::vector<RunRow> rows;
+  LogContents c = scan_log(path, [&](RunRow&& r, const RowSpan&) { rows.push_back(std::move(r)); });
+  c.rows = std::move(rows);
+  return c;
+}
+
+LogContents scan_log(const std::string& path, const std::function<void(RunRow&&, const RowSpan&)>& on_row) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string data = ss.str();
   LogContents c;
-  std::size_t pos = 0, line_no = 0;
-  while (pos < data.size()) {
-    const std::size_t nl = data.find('\n', pos);
+  std::uint64_t pos = 0, line_no = 0;
+  std::string line;
+  while (std::getline(in, line)) {
     ++line_no;
-    if (nl == std::string::npos) {  // no newline: a line torn by a kill (we always end lines)
+    if (in.eof()) {  // no newline: a line torn by a kill (we always end lines)
       c.torn_tail = true;
       break;
     }
-    const std::string line = data.substr(pos, nl - pos);
-    Json j;
+    std::optional<RunRow> row;
     try {
-      j = Json::parse(line);
+      const Json j = Json::parse(line);
       if (line_no == 1) {
         c.header.identity = j.at("identity");
         c.header.campaign_id = j.at("campaign_id").get<std::string>();
@@ -121,16 +123,32 @@ LogContents read_log(const std::string& path) {
         if (campaign_id_of(c.header.identity) != c.header.campaign_id)
           throw std::runtime_error("the header's campaign_id does not match its identity");
       } else {
-        c.rows.push_back(row_from_json(j));
+        row = row_from_json(j);
       }
     } catch (const std::exception& e) {
       throw std::runtime_error(path + ":" + std::to_string(line_no) + ": not a campaign log line (" + e.what() + ")");
     }
-    pos = nl + 1;
+    // Outside the try: what the caller throws for a well-formed row is its own error.
+    if (row) on_row(std::move(*row), RowSpan{pos, line.size()});
+    pos += line.size() + 1;
     c.valid_bytes = pos;
   }
+  if (in.bad()) throw std::runtime_error(path + ": read failed");
   if (line_no == 0 || c.header.campaign_id.empty()) throw std::runtime_error(path + ": empty campaign log (no header)");
   return c;
+}
+
+RunRow read_row_at(const std::string& path, const RowSpan& span) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line(span.length, '\0');
+  if (!in || !in.seekg(static_cast<std::streamoff>(span.offset)) ||
+      !in.read(line.data(), static_cast<std::streamsize>(span.length)))
+    throw std::runtime_error(path + ": cannot be read at byte " + std::to_string(span.offset));
+  try {
+    return row_from_json(Json::parse(line));
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": byte " + std::to_string(span.offset) + ": not a campaign log line (" + e.what() + ")");
+  }
 }
 
 LogWriter::LogWriter(const std::string& path, const LogHeader& h) : path_(path) {

@@ -6,6 +6,7 @@
 // campaign's tables are built from them sorted by run index (finalize.hpp), so they do not
 // depend on --jobs, on the shard split or on the order runs finished in.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -67,6 +68,20 @@ struct LogContents {
 
 //! Reads a log; throws std::runtime_error naming the file and line when it is not one.
 LogContents read_log(const std::string& path);
+
+//! Where a row's line is in its log file (for read_row_at).
+struct RowSpan {
+  std::uint64_t offset = 0, length = 0;  //!< bytes, without the newline
+};
+
+//! Reads a log line by line without keeping its rows (a campaign of many runs is read in memory
+//! that does not grow with the runs): `on_row` is called with each complete row, in file order,
+//! and where its line is. Returns what read_log() does, with `rows` empty; the same errors.
+LogContents scan_log(const std::string& path, const std::function<void(RunRow&&, const RowSpan&)>& on_row);
+
+//! The row whose line is at `span` of the log file `path` (a span scan_log() gave); throws
+//! std::runtime_error naming the file and byte offset when it cannot be read or parsed.
+RunRow read_row_at(const std::string& path, const RowSpan& span);
 
 //! Appends rows to a log, each fsync'ed before append() returns. Opening a new file writes the
 //! header; opening an existing one (resume) truncates it to `valid_bytes` first.

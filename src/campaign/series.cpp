@@ -184,12 +184,15 @@ std::vector<Envelope> compute_envelopes(const std::vector<SeriesIndexEntry>& ent
                                  std::to_string(entries[r].series) + " series, the campaign " + std::to_string(names.size()));
       same[r] = entries[r].samples == grid.size() && read_vec(entries[r], 0, 0, entries[r].samples) == grid;
     }
-    const std::size_t block = std::max<std::size_t>(16, (std::size_t{1} << 20) / std::max<std::size_t>(1, entries.size()));
+    // A block of samples of every run is in memory at once: about 2^18 values (2 MiB) whatever the
+    // number of runs (the blocks only change how often the files are read, not the envelopes).
+    const std::size_t block = std::max<std::size_t>(16, (std::size_t{1} << 18) / std::max<std::size_t>(1, entries.size()));
     std::vector<double> column;
     for (std::size_t s = 0; s < names.size(); ++s) {
       for (std::size_t b0 = 0; b0 < grid.size(); b0 += block) {
         const std::size_t nb = std::min(block, grid.size() - b0);
         std::vector<std::vector<double>> vals(nb);  // [sample in block][run]
+        for (auto& v : vals) v.reserve(entries.size());  // exactly, not up to twice by growing
         for (std::size_t r = 0; r < entries.size(); ++r) {
           std::vector<double> y;
           if (same[r]) {

@@ -3,8 +3,10 @@
 // goes on; merge refuses logs that do not make one campaign.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "campaign/campaign.hpp"
@@ -206,6 +208,120 @@ TEST_F(Campaign, RefusesBadPlansBeforeWritingAnything) {
   e.shard_count = 3;
   EXPECT_THROW(run_campaign(plan(), e), ParamError);
   EXPECT_TRUE(fs::is_empty(d));
+  // The same with workers running the next runs while the first one decides (their rows are
+  // held, then dropped): nothing written either.
+  e = ExecOptions{};
+  e.out_dir = d;
+  e.jobs = 3;
+  scenario.sleep_ms = 20;
+  p = plan();
+  p.series = {"no_such_column"};
+  EXPECT_THROW(run_campaign(p, e), ParamError);
+  p = plan();
+  p.rank_metric = "no_such_metric";
+  EXPECT_THROW(run_campaign(p, e), ParamError);
+  // Nominal parameters the scenario refuses, without dispersions: a bad command line.
+  p = plan();
+  p.dispersions.clear();
+  p.params.set("gain", "-1");
+  try {
+    run_campaign(p, e);
+    FAIL();
+  } catch (const ParamError& err) {
+    EXPECT_EQ(std::string(err.what()), "gain must be >= 0");
+  }
+  EXPECT_TRUE(fs::is_empty(d));
+}
+
+TEST_F(Campaign, TheFirstRunRunsInThePoolNotAloneBeforeIt) {
+  // It decides whether the campaign may run (a bad --series, --rank-by or nominal configuration
+  // is refused), but not by running alone: with --jobs 2, runs 0 and 1 overlap.
+  const fs::path a = fresh_dir("pool_j1"), b = fresh_dir("pool_j2");
+  ExecOptions e;
+  e.out_dir = a;
+  run_campaign(plan(), e);
+  EXPECT_EQ(scenario.max_in_flight.load(), 1);
+  CampaignPlan p = plan();
+  p.runs = 2;
+  scenario.sleep_ms = 300;
+  scenario.max_in_flight = 0;
+  e.out_dir = b;
+  e.jobs = 2;
+  run_campaign(p, e);
+  EXPECT_EQ(scenario.max_in_flight.load(), 2);
+  // Many workers, many runs: the rows held while run 0 decided are all logged, once.
+  scenario.sleep_ms = 5;
+  const fs::path c = fresh_dir("pool_j4");
+  e.out_dir = c;
+  e.jobs = 4;
+  run_campaign(plan(), e);
+  EXPECT_TRUE(outputs(a) == outputs(c));
+  EXPECT_EQ(read_log((c / log_file_name("decay", 0, 1)).string()).rows.size(), 24u);
+}
+
+TEST_F(Campaign, TablesAreTheRowsSortedByRunThoughNotHeldInMemory) {
+  // finalize reads the rows back one at a time; what it writes must be what the rows, all in
+  // memory and sorted by run, give: metrics in order of first appearance (one that appears only
+  // in later runs, at any position), the first failing runs of each claim, the worst runs with
+  // ties in run order (J_trace is the same in every run here), the first failed runs.
+  scenario.extra_metrics = true;
+  CampaignPlan p = plan();
+  p.runs = 60;
+  p.dispersions = {parse_dispersion("gain=uniform(-0.3, 2.5)")};  // < 0: invalid
+  p.rank_metric = "J_trace";
+  p.series.clear();
+  const fs::path d = fresh_dir("streamed");
+  ExecOptions e;
+  e.out_dir = d;
+  e.jobs = 3;
+  run_campaign(p, e);
+  const std::string log_path = (d / log_file_name("decay", 0, 1)).string();
+  LogContents all = read_log(log_path);
+  std::vector<RunRow>& rows = all.rows;
+  ASSERT_EQ(rows.size(), 60u);
+  // scan_log sees the same rows, and read_row_at reads each back from where scan_log found it.
+  std::size_t scanned = 0;
+  scan_log(log_path, [&](RunRow&& r, const RowSpan& span) {
+    EXPECT_EQ(to_json(r).dump(), to_json(rows[scanned]).dump());
+    EXPECT_EQ(to_json(read_row_at(log_path, span)).dump(), to_json(rows[scanned]).dump());
+    ++scanned;
+  });
+  EXPECT_EQ(scanned, 60u);
+  std::sort(rows.begin(), rows.end(), [](const RunRow& a, const RunRow& b) { return a.run < b.run; });
+
+  std::vector<std::string> metric_names;
+  std::set<std::string> seen;
+  for (const RunRow& r : rows)
+    for (const auto& m : r.metrics)
+      if (seen.insert(m.first).second) metric_names.push_back(m.first);
+  ASSERT_TRUE(seen.count("fast") && seen.count("slow"));
+  std::string header = "run,gain";
+  for (const auto& m : metric_names) header += "," + m;
+  header += ",status,seed,error\n";
+  const std::string csv = slurp(d / "decay-montecarlo.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n') + 1), header);
+
+  const Json j = Json::parse(slurp(d / "decay-montecarlo.json"));
+  Json metrics_order = Json::array();
+  for (const auto& [k, v] : j["metrics"].items()) metrics_order.push_back(k);
+  EXPECT_EQ(metrics_order, Json(metric_names));
+  std::vector<std::uint64_t> failing;
+  for (const RunRow& r : rows)
+    if (failing.size() < 3 && r.claims.size() == 2 && r.claims[0].holds == false) failing.push_back(r.run);
+  ASSERT_EQ(failing.size(), 3u);
+  ASSERT_EQ(j["claims"][0]["failing_runs"].size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(j["claims"][0]["failing_runs"][i]["run"], failing[i]);
+    EXPECT_EQ(j["claims"][0]["failing_runs"][i]["command"], rerun_command(all.header.identity, rows[failing[i]]));
+  }
+  std::vector<std::uint64_t> ok_runs, not_ok;
+  for (const RunRow& r : rows) (r.status == RunStatus::ok ? ok_runs : not_ok).push_back(r.run);
+  ASSERT_GE(ok_runs.size(), 5u);
+  ASSERT_FALSE(not_ok.empty());
+  ASSERT_EQ(j["worst_runs"]["runs"].size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(j["worst_runs"]["runs"][i]["run"], ok_runs[i]);  // all tie
+  ASSERT_EQ(j["failed_runs"].size(), std::min<std::size_t>(20, not_ok.size()));
+  for (std::size_t i = 0; i < j["failed_runs"].size(); ++i) EXPECT_EQ(j["failed_runs"][i]["run"], not_ok[i]);
 }
 
 TEST_F(Campaign, ARunIsReproducedAloneFromItsIndex) {
