@@ -319,7 +319,7 @@ CampaignCounts run_campaign(const CampaignPlan& plan, const ExecOptions& exec) {
     series_out.reset();
   }
   if (pending.empty()) progress.report(true);  // nothing ran: say so once
-  if (exec.shard_count == 1) finalize_from_dirs({exec.out_dir}, exec.out_dir, plan.name);
+  if (exec.shard_count == 1) counts.tables = finalize_from_dirs({exec.out_dir}, exec.out_dir, plan.name);
   return counts;
 }
 

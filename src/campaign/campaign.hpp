@@ -14,6 +14,7 @@
 
 #include "campaign/campaign_log.hpp"
 #include "campaign/dispersion.hpp"
+#include "campaign/finalize.hpp"
 #include "campaign/series.hpp"
 #include "scenarios/scenario.hpp"
 
@@ -46,6 +47,7 @@ struct ExecOptions {
 
 struct CampaignCounts {
   std::uint64_t ok = 0, invalid = 0, failed = 0, resumed = 0;
+  FinalizeResult tables;  //!< the tables written at the end of an unsplit campaign (empty for a shard)
 };
 
 //! The campaign's identity (what every shard's log header holds).
