@@ -19,8 +19,11 @@
 #        is still caught: out-of-bounds and object-size by ASan, Eigen's unaligned-array and index
 #        asserts (armed: no NDEBUG), null by the segfault. The arithmetic checks (overflow,
 #        float-cast, shifts, division, bounds, bool/enum, return/unreachable) stay on everywhere.
-#   -gline-tables-only (as CMAKE_CXX_FLAGS_DEBUG): file:line in every report without full
-#        debug info; Debug build type otherwise, so NDEBUG stays undefined and Eigen's own
+#   No debug info (CMAKE_CXX_FLAGS_DEBUG empty): a report names each frame's function (symbol
+#        table); -gline-tables-only, which adds file:line, cost ~12 % of this tree's compile time
+#        (docs/DECISIONS.md, "CI under 20 minutes"). For file:line, reconfigure with
+#        -DCMAKE_CXX_FLAGS_DEBUG=-gline-tables-only. The fuzzers keep it: their reports come from
+#        new inputs. Debug build type otherwise, so NDEBUG stays undefined and Eigen's own
 #        asserts (bounds, sizes) are armed too.
 #   Bench and the Cortex-M7 check are off: neither runs host code under test.
 # Usage: tools/run-sanitizers.sh [BUILD_DIR]   (default: build-asan). Prints the wall and CPU time
