@@ -231,5 +231,5 @@ foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
                    -DCOSTS_JSON=${PROJECT_SOURCE_DIR}/bench/target-costs.json
                    -P ${_tr}/run_replay_check.cmake)
   set_tests_properties(target_replay_${sys} target_icount_${sys} PROPERTIES
-                       LABELS target FIXTURES_REQUIRED adcs_target_build TIMEOUT 600)
+                       LABELS target FIXTURES_REQUIRED adcs_target_build TIMEOUT 600 COST 10)
 endforeach()

@@ -2,6 +2,10 @@
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
+set(consumer_cxx)
+if(CONSUMER_CXX)
+  set(consumer_cxx -DCMAKE_CXX_COMPILER=${CONSUMER_CXX})  # the build's compiler (tests/install/CMakeLists.txt)
+endif()
 
 function(run_step what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -16,6 +20,6 @@ if(NOT EXISTS ${prefix}/share/adcs/cmake/adcsConfig.cmake)
   message(FATAL_ERROR "adcsConfig.cmake not installed under ${prefix}/share/adcs/cmake")
 endif()
 run_step("configure consumer" ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
-         -G ${CMAKE_GENERATOR} -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+         -G ${CMAKE_GENERATOR} -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release ${consumer_cxx})
 run_step("build consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run_step("run consumer" ${WORK_DIR}/build/consumer)
