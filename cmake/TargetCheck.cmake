@@ -66,6 +66,15 @@ if(ADCS_CLANG_CXX)
     message(STATUS "Cortex-M7 header check: arm-none-eabi-g++'s include dirs not found, every header goes to g++")
   endif()
 endif()
+# The M7 compiler of every check below but the umbrella header and the replays: clang when its
+# arm-none-eabi include directories were found, else arm-none-eabi-g++.
+if(_clang_arm)
+  set(_m7_cxx ${_clang_arm})
+  set(_m7_who "clang++ --target=arm-none-eabi")
+else()
+  set(_m7_cxx ${ADCS_ARM_CXX} ${ADCS_ARM_FLAGS})
+  set(_m7_who "arm-none-eabi-g++")
+endif()
 foreach(h IN LISTS ADCS_PUBLIC_HEADERS)
   string(REPLACE "/" "__" stem ${h})
   string(REPLACE ".hpp" "" stem ${stem})
@@ -73,12 +82,12 @@ foreach(h IN LISTS ADCS_PUBLIC_HEADERS)
   file(WRITE ${tu}.in "// generated: compile ${h} alone for Cortex-M7\n#include \"${h}\"\n")
   configure_file(${tu}.in ${tu} COPYONLY)
   set(stamp ${_gen}/${stem}.checked)
-  if(_clang_arm AND NOT h STREQUAL "adcs/adcs.hpp")
-    set(_cxx ${_clang_arm})
-    set(_who "clang++ --target=arm-none-eabi")
-  else()
+  if(h STREQUAL "adcs/adcs.hpp")
     set(_cxx ${ADCS_ARM_CXX} ${ADCS_ARM_FLAGS})
     set(_who "arm-none-eabi-g++")
+  else()
+    set(_cxx ${_m7_cxx})
+    set(_who ${_m7_who})
   endif()
   add_custom_command(OUTPUT ${stamp}
     COMMAND ${_cxx} -I${PROJECT_SOURCE_DIR}/include -isystem ${_eigen_inc} -fsyntax-only ${tu}
@@ -98,20 +107,13 @@ endforeach()
 #     arm-none-eabi-g++ still compiles with -Werror the umbrella header and the replay ELFs of
 #     part 2, i.e. every step the paper systems run on the board (docs/DECISIONS.md, "CI under 20
 #     minutes"). Without clang++-14 the units go to g++ as before.
-if(_clang_arm)
-  set(_inst_cxx ${_clang_arm})
-  set(_inst_who "clang++ --target=arm-none-eabi")
-else()
-  set(_inst_cxx ${ADCS_ARM_CXX} ${ADCS_ARM_FLAGS})
-  set(_inst_who "arm-none-eabi-g++")
-endif()
 foreach(unit attitude seed002 seed003 seed004 eskf27)
   set(_inst ${PROJECT_SOURCE_DIR}/tests/target/instantiate_${unit}.cpp)
   add_custom_command(OUTPUT ${_gen}/instantiate_${unit}.o
-    COMMAND ${_inst_cxx} -I${PROJECT_SOURCE_DIR}/include -I${PROJECT_SOURCE_DIR}/src
+    COMMAND ${_m7_cxx} -I${PROJECT_SOURCE_DIR}/include -I${PROJECT_SOURCE_DIR}/src
             -isystem ${_eigen_inc} -c ${_inst} -o ${_gen}/instantiate_${unit}.o
     DEPENDS ${_inst} ${_header_paths}
-    COMMENT "${_inst_who} (Cortex-M7) instantiate_${unit}.cpp" VERBATIM)
+    COMMENT "${_m7_who} (Cortex-M7) instantiate_${unit}.cpp" VERBATIM)
   list(APPEND _outputs ${_gen}/instantiate_${unit}.o)
 endforeach()
 # The compile checks in a target of their own: the custom commands of a target wait (order-only)
