@@ -11,14 +11,17 @@
 #        every file.
 #   -O2: the scenario tests run 10^5 controller steps each; at -O1 they were ~30x slower than
 #        the Release build.
-#   UBSan: in full on the four fuzzers, which drive every controller/estimator step() of
-#        include/adcs with arbitrary inputs; the tests (unit, no-allocation, sim, and src/ that they
-#        link) leave out the pointer checks (alignment, null, object-size, pointer-overflow, vptr,
-#        function; ADCS_TEST_COMPILE_OPTIONS), which made the closed loops' Eigen code ~9x slower
-#        than ASan alone and cost ~40 % of the unit tests' compile time. What they would catch there
-#        is still caught: out-of-bounds and object-size by ASan, Eigen's unaligned-array and index
-#        asserts (armed: no NDEBUG), null by the segfault. The arithmetic checks (overflow,
-#        float-cast, shifts, division, bounds, bool/enum, return/unreachable) stay on everywhere.
+#   UBSan without its pointer checks (alignment, null, object-size, pointer-overflow, vptr,
+#        function) on every test and on the fuzzers' corpus replay (ADCS_TEST_COMPILE_OPTIONS,
+#        ADCS_FUZZ_NO_SANITIZE): they made the closed loops' Eigen code ~9x slower than ASan
+#        alone and cost ~40 % of the unit tests' and ~half of the fuzzers' compile time. What they
+#        would catch is still caught: out-of-bounds and object-size by ASan, Eigen's
+#        unaligned-array and index asserts (armed: no NDEBUG), null by the segfault. The
+#        arithmetic checks (overflow, float-cast, shifts, division, bounds, bool/enum,
+#        return/unreachable) stay on everywhere; the standalone fuzz campaigns
+#        (tools/run-fuzzers.sh) run the full UBSan.
+#   -O1 for the unit and no-allocation tests (ADCS_FLIGHT_TEST_OPT): they run milliseconds of
+#        flight code each; ~7 % less compile time than -O2.
 #   No debug info (CMAKE_CXX_FLAGS_DEBUG empty): a report names each frame's function (symbol
 #        table); -gline-tables-only, which adds file:line, cost ~12 % of this tree's compile time
 #        (docs/DECISIONS.md, "CI under 20 minutes"). For file:line, reconfigure with
