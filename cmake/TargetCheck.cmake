@@ -116,6 +116,31 @@ foreach(unit attitude seed002 seed003 seed004 eskf27)
     COMMENT "${_m7_who} (Cortex-M7) instantiate_${unit}.cpp" VERBATIM)
   list(APPEND _outputs ${_gen}/instantiate_${unit}.o)
 endforeach()
+# 1c. Cortex-M4F, single precision (issue 19): the float instances compiled for an FPU without
+#     double (-mfpu=fpv4-sp-d16) by arm-none-eabi-g++ with -Wdouble-promotion -Wfloat-conversion
+#     (any float computation promoted to double fails the build), and ctest target_m4f_no_double
+#     walks the object's call graph from the step entry points (tools/check-float-calls.py): no
+#     software-double helper and no double libm function may be reachable.
+set(ADCS_M4F_FLAGS
+  -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard -mthumb -O2 -std=c++17
+  -fno-exceptions -fno-rtti -fno-threadsafe-statics -ffunction-sections -fdata-sections
+  -DEIGEN_NO_MALLOC -Wall -Wextra -Wpedantic -Wdouble-promotion -Wfloat-conversion -Werror)
+set(_m4f_obj ${_gen}/m4f_float_steps.o)
+add_custom_command(OUTPUT ${_m4f_obj}
+  COMMAND ${ADCS_ARM_CXX} ${ADCS_M4F_FLAGS} -I${PROJECT_SOURCE_DIR}/include -isystem ${_eigen_inc}
+          -c ${PROJECT_SOURCE_DIR}/tests/target/m4f_float_steps.cpp -o ${_m4f_obj}
+  DEPENDS ${PROJECT_SOURCE_DIR}/tests/target/m4f_float_steps.cpp ${_header_paths}
+  COMMENT "arm-none-eabi-g++ (Cortex-M4F, float) m4f_float_steps.cpp" VERBATIM)
+list(APPEND _outputs ${_m4f_obj})
+find_program(ADCS_ARM_OBJDUMP arm-none-eabi-objdump)
+find_package(Python3 COMPONENTS Interpreter)
+if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
+  add_test(NAME target_m4f_no_double
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
+                   ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step)
+  set_tests_properties(target_m4f_no_double PROPERTIES LABELS target FIXTURES_REQUIRED adcs_target_build)
+endif()
+
 # The compile checks in a target of their own: the custom commands of a target wait (order-only)
 # for every target it depends on, so inside adcs_target_check they started only after the replay
 # chain (host cores -> recorder -> nested M7 build) and ended the build alone for ~80 s.

@@ -522,4 +522,9 @@ void ParamSet::set(const std::string& key, const std::string& text) {
   p.overridden = true;
 }
 
+void declare_scalar(ParamSet& p) {
+  p.name("scalar", "double", {"double", "float"},
+         "scalar of the flight components (law, allocation); the plant integrates in double");
+}
+
 }  // namespace adcs::sim

@@ -149,4 +149,8 @@ class ParamSet {
   std::map<std::string, std::size_t> index_;
 };
 
+//! Declares `scalar` (double | float, issue 19): the scalar the flight components of a scenario
+//! run in; the plant stays double under CVODE. Every paper scenario declares it.
+void declare_scalar(ParamSet& p);
+
 }  // namespace adcs::sim

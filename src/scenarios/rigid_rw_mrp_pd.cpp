@@ -96,9 +96,18 @@ class RigidRwMrpPd final : public Scenario {
     p.vector("P_Nms", v_.P_Nms, "N m s", "diagonal rate gain; " + v_.gain_source);
     declare_wheel_limits(p, v_.torque_limit_Nm, v_.limit_source);
     p.number("settle_band_rad", v_.settle_band_rad, "rad", "principal-angle band for settle_s; " + v_.gain_source);
+    declare_scalar(p);
   }
 
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
+    return p.get_name("scalar") == "float" ? run_as<float>(p, ctx) : run_as<double>(p, ctx);
+  }
+
+ private:
+  //! The loop with the law and the allocation in scalar S (the plant stays double under CVODE):
+  //! their parameters, inputs and outputs cross the boundary through cast<S>() and back.
+  template <class S>
+  RunResult run_as(const ParamSet& p, const RunContext& ctx) const {
     const RigidRwPlant::Params pp = rigid_rw_plant_params(p);
     const RigidRwPlant plant(pp);
 
@@ -109,13 +118,13 @@ class RigidRwMrpPd final : public Scenario {
     cp.G_s_B = pp.G_s_B;
     cp.J_s = pp.J_s;
     cp.period_s = p.get_number("control_period_s");
-    MrpPd<kRigidRwWheels> controller(cp);
+    MrpPd<kRigidRwWheels, S> controller(cp.template cast<S>());
     if (controller.status() != Status::ok)
       throw ParamError("MRP PD parameters rejected (K_Nm > 0, P_Nms > 0, SPD inertia, unit wheel axes)");
     RwAllocationParams<kRigidRwWheels> ap;
     ap.G_s_B = pp.G_s_B;
     ap.torque_limit = p.get_number("torque_limit_Nm");
-    RwTorqueAllocator<kRigidRwWheels> allocator(ap);
+    RwTorqueAllocator<kRigidRwWheels, S> allocator(ap.template cast<S>());
     if (allocator.status() != Status::ok) throw ParamError("torque_limit_Nm must be > 0");
     const ActuatorLimits<0, kRigidRwWheels> limits = wheel_limits(p);
     AttitudeReference ref;
@@ -146,16 +155,16 @@ class RigidRwMrpPd final : public Scenario {
     // The loop (sim/closed_loop.hpp): perfect sensors (assumed) → MRP PD → min-norm allocation
     // with the torque limit → each wheel's speed limit → the plant's wheel motors.
     auto sensors = [&](double, const RigidRwPlant::State& xs) {
-      MrpPd<kRigidRwWheels>::Input m;
+      MrpPdInput<kRigidRwWheels> m;
       m.state = AttitudeState{RigidRwPlant::sigma_BN(xs), RigidRwPlant::omega_BN_B(xs)};
       m.Omega_rad_s = RigidRwPlant::Omega(xs);
       m.reference = ref;
-      return m;
+      return m.template cast<S>();  // beyond float range: ±Inf (core/types.hpp narrow_scalar)
     };
-    auto to_actuation = [](double, const RigidRwPlant::State&, const BodyTorque& cmd) { return cmd; };
-    auto to_plant = [&](double, const RigidRwPlant::State& xs, const WheelTorques<kRigidRwWheels>& w,
+    auto to_actuation = [](double, const RigidRwPlant::State&, const BodyTorqueT<S>& cmd) { return cmd; };
+    auto to_plant = [&](double, const RigidRwPlant::State& xs, const WheelTorques<kRigidRwWheels, S>& w,
                         RigidRwPlant::Input& u) {
-      set_wheel_input(limits, xs, w, u, speed_held);
+      set_wheel_input(limits, xs, w.template cast<double>(), u, speed_held);
       u.tail<3>().setZero();
     };
     auto observe = [&](const auto& s) {
@@ -177,7 +186,7 @@ class RigidRwMrpPd final : public Scenario {
       if (csv) {
         rigid_rw_row(t, xs, row);
         row.push_back(err);
-        for (int i = 0; i < 3; ++i) row.push_back(s.command.torque_B_Nm(i));
+        for (int i = 0; i < 3; ++i) row.push_back(static_cast<double>(s.command.torque_B_Nm(i)));
         for (int i = 0; i < kRigidRwWheels; ++i) row.push_back(u(i));
         csv->record_row(row, s.final);
       }
@@ -230,7 +239,6 @@ class RigidRwMrpPd final : public Scenario {
     return r;
   }
 
- private:
   MrpPdVehicle v_;
 };
 

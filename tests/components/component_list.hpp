@@ -289,6 +289,30 @@ struct ComponentFixture<RwTorqueAllocator<4>> {
   static void poison(RwTorqueAllocator<4>::Input& in) { in.torque_B_Nm(0) = kNaN; }
 };
 
+// ---- float instances (issue 19): the double fixture's data, rounded once ----------------------
+
+inline constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
+
+template <>
+struct ComponentFixture<MrpPd<4, float>> {
+  static constexpr const char* name = "MrpPd4f";
+  using C = MrpPd<4, float>;
+  using D = ComponentFixture<MrpPd<4>>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.state.omega_BN_B(1) = kNaNf; }
+};
+
+template <>
+struct ComponentFixture<RwTorqueAllocator<4, float>> {
+  static constexpr const char* name = "RwTorqueAllocator4f";
+  using C = RwTorqueAllocator<4, float>;
+  using D = ComponentFixture<RwTorqueAllocator<4>>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.torque_B_Nm(0) = kNaNf; }
+};
+
 template <>
 struct ComponentFixture<Saturation<6>> {
   static constexpr const char* name = "Saturation6";
@@ -335,12 +359,13 @@ int put_values(const Eigen::MatrixBase<Derived>& x, double* dst) {
   for (Eigen::Index i = 0; i < x.size(); ++i) dst[i] = x.derived().coeff(i);
   return static_cast<int>(x.size());
 }
-inline int output_values(const BodyTorque& o, double* d) { return put_values(o.torque_B_Nm, d); }
+template <class S>
+int output_values(const BodyTorqueT<S>& o, double* d) { return put_values(o.torque_B_Nm, d); }
 inline int output_values(const Wrench& o, double* d) { return put_values(o.stacked(), d); }
 template <int M, int N>
 int output_values(const VscmgRates<M, N>& o, double* d) { return put_values(o.stacked(), d); }
-template <int N>
-int output_values(const WheelTorques<N>& o, double* d) { return put_values(o.u_s_Nm, d); }
+template <int N, class S>
+int output_values(const WheelTorques<N, S>& o, double* d) { return put_values(o.u_s_Nm, d); }
 template <int N>
 int output_values(const PidOutput<N>& o, double* d) { return put_values(o.u, d); }
 template <int N>
@@ -373,7 +398,8 @@ struct OutputValues {
 //! (tests/fuzz/fuzz_components.cpp).
 using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural, AdaptiveTracking, PrescribedTimeSe3, FtsmcSe3,
                      DragFreeAdrc, Pid<3>, DragFreeEskf, SaturatedEsf, RwTorqueAllocator<4>, Saturation<6>,
-                     SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude>;
+                     SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
+                     RwTorqueAllocator<4, float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/format.hpp"
 #include "adcs/math/euler.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
@@ -61,11 +62,7 @@ Mat3 F_of(const Vec3& angles) {
   return F;
 }
 
-std::string sci(double v) {
-  std::ostringstream os;
-  os << std::scientific << std::setprecision(3) << v;
-  return os.str();
-}
+using adcs::test::sci;
 
 void rk4_step(const Plant& plant, Plant::State& x, const Vec3& torque, double h) {
   Plant::State k1, k2, k3, k4;

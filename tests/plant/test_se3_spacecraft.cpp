@@ -11,6 +11,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "../support/format.hpp"
 #include "adcs/plant/orbit_environment.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
 #include "se3_rk4.hpp"
@@ -27,7 +28,6 @@ using adcs::Vec3;
 using adcs::Vec6;
 using adcs_test::rk4_step;
 
-constexpr double kPi = 3.14159265358979323846;
 
 constexpr double kDt = 0.0125;     // spec Appendix C.1: RK4 at 1/80 s
 constexpr int kSteps200s = 16000;  // 200 s
@@ -38,11 +38,7 @@ Se3SpacecraftState target0(const adcs::Se3ScenarioParams& p) {
   return x;
 }
 
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3e", v);
-  return buf;
-}
+using adcs::test::sci;
 
 Vec3 row(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
 
@@ -216,7 +212,7 @@ TEST(Se3Scenario, ParametersDisturbanceAndLimits) {
 TEST(Se3Scenario, EulerZyxIsActiveIntrinsic) {
   // C_rel = Rz(ψ) Ry(ϑ) Rx(φ) with active elementary rotations built independently by so3_exp.
   for (const auto& pose : adcs::kSe3InitialPoses) {
-    const Vec3 a = row(pose.euler_zyx_deg) * kPi / 180.0;
+    const Vec3 a = row(pose.euler_zyx_deg) * adcs::kPiRad / 180.0;
     const Mat3 expected = adcs::so3_exp(a(0) * Vec3::UnitZ()) *
                           adcs::so3_exp(a(1) * Vec3::UnitY()) * adcs::so3_exp(a(2) * Vec3::UnitX());
     EXPECT_LT((adcs::se3_relative_attitude(pose) - expected).norm(), 1e-14);
@@ -228,7 +224,7 @@ TEST(Se3Scenario, State4RotationAngleAndPositionError) {
   const adcs::Se3ScenarioParams p;
   const Mat3 C_rel = adcs::se3_relative_attitude(adcs::kSe3InitialPoses[3]);
   const double cos_angle = std::clamp((C_rel.trace() - 1.0) / 2.0, -1.0, 1.0);
-  const double angle_deg = std::acos(cos_angle) * 180.0 / kPi;
+  const double angle_deg = std::acos(cos_angle) * 180.0 / adcs::kPiRad;
   EXPECT_NEAR(angle_deg, 165.48, 0.005);
 
   const Se3SpacecraftState tgt = target0(p);

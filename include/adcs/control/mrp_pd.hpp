@@ -18,36 +18,57 @@ namespace adcs {
 
 //! No field has a default: a forgotten gain, inertia or wheel axis is NaN and the controller
 //! refuses the set (status() == invalid_parameter) instead of running with made-up values.
-template <int N>
+template <int N, class S = double>
 struct MrpPdParams {
-  double K = kUnset;                                //!< [N m] attitude gain on sigma_BR, > 0
-  Mat3 P = Mat3::Constant(kUnset);                  //!< [N m s] rate gain on omega_BR_B, SPD
-  Mat3 J_rw_B = Mat3::Constant(kUnset);             //!< [kg m^2] J - sum J_s g g^T, B components, SPD
-  Mat<3, N> G_s_B = Mat<3, N>::Constant(kUnset);    //!< [-] wheel spin axes (unit), B components
-  Vec<N> J_s = Vec<N>::Constant(kUnset);            //!< [kg m^2] wheel spin inertias, >= 0
-  double period_s = kUnset;                         //!< [s] sample period the law runs at, > 0
-  FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
+  S K = unset_v<S>;                                            //!< [N m] attitude gain on sigma_BR, > 0
+  Mat<3, 3, S> P = Mat<3, 3, S>::Constant(unset_v<S>);        //!< [N m s] rate gain on omega_BR_B, SPD
+  Mat<3, 3, S> J_rw_B = Mat<3, 3, S>::Constant(unset_v<S>);   //!< [kg m^2] J - sum J_s g g^T, B components, SPD
+  Mat<3, N, S> G_s_B = Mat<3, N, S>::Constant(unset_v<S>);    //!< [-] wheel spin axes (unit), B components
+  Vec<N, S> J_s = Vec<N, S>::Constant(unset_v<S>);            //!< [kg m^2] wheel spin inertias, >= 0
+  S period_s = unset_v<S>;                                     //!< [s] sample period the law runs at, > 0
+  FailurePolicy on_failure = FailurePolicy::safe_command;      //!< after a failed step: zero torque, or hold
+  //! The same parameters in another scalar (each value rounded once; validation is redone by the
+  //! controller that receives them).
+  template <class T>
+  MrpPdParams<N, T> cast() const noexcept {
+    MrpPdParams<N, T> q;
+    q.K = narrow_scalar<T>(K);
+    q.P = scalar_cast<T>(P);
+    q.J_rw_B = scalar_cast<T>(J_rw_B);
+    q.G_s_B = scalar_cast<T>(G_s_B);
+    q.J_s = scalar_cast<T>(J_s);
+    q.period_s = narrow_scalar<T>(period_s);
+    q.on_failure = on_failure;
+    return q;
+  }
 };
 
-template <int N>
+template <int N, class S = double>
 struct MrpPdInput {
-  AttitudeState state{};          //!< measured σ_BN, ω_BN_B
-  Vec<N> Omega_rad_s = Vec<N>::Zero();  //!< [rad/s] wheel speeds relative to the body
-  AttitudeReference reference{};  //!< σ_RN, ω_RN_N, ω̇_RN_N
+  AttitudeStateT<S> state{};                  //!< measured σ_BN, ω_BN_B
+  Vec<N, S> Omega_rad_s = Vec<N, S>::Zero();  //!< [rad/s] wheel speeds relative to the body
+  AttitudeReferenceT<S> reference{};          //!< σ_RN, ω_RN_N, ω̇_RN_N
+  template <class T>
+  MrpPdInput<N, T> cast() const noexcept {
+    return {state.template cast<T>(), scalar_cast<T>(Omega_rad_s), reference.template cast<T>()};
+  }
 };
 
-struct MrpPdDiagnostics {
-  Vec3 sigma_BR = Vec3::Zero();    //!< [-] attitude error used
-  Vec3 omega_BR_B = Vec3::Zero();  //!< [rad/s] rate error used
+template <class S = double>
+struct MrpPdDiagnosticsT {
+  Vec<3, S> sigma_BR = Vec<3, S>::Zero();    //!< [-] attitude error used
+  Vec<3, S> omega_BR_B = Vec<3, S>::Zero();  //!< [rad/s] rate error used
 };
+using MrpPdDiagnostics = MrpPdDiagnosticsT<double>;
 
-template <int N>
+template <int N, class S = double>
 class MrpPd {
  public:
-  using Params = MrpPdParams<N>;
-  using Input = MrpPdInput<N>;
-  using Output = BodyTorque;
-  using Diagnostics = MrpPdDiagnostics;
+  using Scalar = S;
+  using Params = MrpPdParams<N, S>;
+  using Input = MrpPdInput<N, S>;
+  using Output = BodyTorqueT<S>;
+  using Diagnostics = MrpPdDiagnosticsT<S>;
 
   explicit MrpPd(const Params& p) noexcept : p_(p), status_(validate(p)) { reset(); }
 
@@ -56,11 +77,11 @@ class MrpPd {
   //! refused controller answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
-  double period_s() const noexcept { return p_.period_s; }
+  S period_s() const noexcept { return p_.period_s; }
 
   static Status validate(const Params& p) noexcept {
-    const bool ok = finite_positive(p.K) && symmetric_positive_definite<3>(p.P) &&
-                    symmetric_positive_definite<3>(p.J_rw_B) && unit_columns<3, N>(p.G_s_B) &&
+    const bool ok = finite_positive(p.K) && symmetric_positive_definite<3, S>(p.P) &&
+                    symmetric_positive_definite<3, S>(p.J_rw_B) && unit_columns<3, N, S>(p.G_s_B) &&
                     finite_nonnegative(p.J_s) && finite_positive(p.period_s);
     return ok ? Status::ok : Status::invalid_parameter;
   }
@@ -72,8 +93,8 @@ class MrpPd {
   //! out_of_range; `out` then receives the failure command (core/failure_policy.hpp: zero
   //! torque, or the last good command under hold_last). The output is always finite.
   [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
-    const AttitudeState& m = in.state;
-    const AttitudeReference& r = in.reference;
+    const AttitudeStateT<S>& m = in.state;
+    const AttitudeReferenceT<S>& r = in.reference;
     if (status_ != Status::ok) {
       out = failure_command(p_.on_failure, last_, Output{});
       return status_;
@@ -83,15 +104,15 @@ class MrpPd {
       out = failure_command(p_.on_failure, last_, Output{});
       return Status::non_finite_input;
     }
-    const Mat3 C_BN = mrp_to_dcm(m.sigma_BN);
-    const Vec3 omega_RN_B = C_BN * r.omega_RN_N;
-    const Vec3 domega_RN_B = C_BN * r.domega_RN_N;
-    const Vec3 sigma_BR = mrp_subtract(m.sigma_BN, r.sigma_RN);
-    const Vec3 omega_BR_B = m.omega_BN_B - omega_RN_B;
-    const Vec3& w = m.omega_BN_B;
-    Vec3 H_B;
+    const Mat<3, 3, S> C_BN = mrp_to_dcm(m.sigma_BN);
+    const Vec<3, S> omega_RN_B = C_BN * r.omega_RN_N;
+    const Vec<3, S> domega_RN_B = C_BN * r.domega_RN_N;
+    const Vec<3, S> sigma_BR = mrp_subtract(m.sigma_BN, r.sigma_RN);
+    const Vec<3, S> omega_BR_B = m.omega_BN_B - omega_RN_B;
+    const Vec<3, S>& w = m.omega_BN_B;
+    Vec<3, S> H_B;
     if constexpr (N > 0) {
-      const Vec<N> h_s = p_.J_s.cwiseProduct(p_.G_s_B.transpose() * w + in.Omega_rad_s);
+      const Vec<N, S> h_s = p_.J_s.cwiseProduct(p_.G_s_B.transpose() * w + in.Omega_rad_s);
       H_B = p_.J_rw_B * w + p_.G_s_B * h_s;
     } else {  // no wheels: no G_s h_s term (a product with the empty 3x0 G_s would be UB)
       H_B = p_.J_rw_B * w;
@@ -119,5 +140,6 @@ class MrpPd {
 };
 
 ADCS_ASSERT_COMPONENT(MrpPd<4>);
+ADCS_ASSERT_COMPONENT(MrpPd<4, float>);
 
 }  // namespace adcs

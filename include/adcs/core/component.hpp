@@ -9,7 +9,8 @@
 //     explicit C(const Params&) noexcept;
 //     Status status() const noexcept;        // ok, or invalid_parameter (checked at construction)
 //     void reset() noexcept;                 // back to the state after construction
-//     double period_s() const noexcept;      // [s] the sample period the component runs at; 0 for a
+//     S period_s() const noexcept;           // [s] the sample period the component runs at (S: its
+//                                            // scalar, double unless it is a float instance); 0 for a
 //                                            // memoryless actuation stage (allocation, saturation,
 //                                            // steering), which runs whenever the law feeding it does
 //     [[nodiscard]] Status step(const Input&, Output&, Diagnostics* = nullptr) noexcept;
@@ -61,7 +62,7 @@ template <class T, class = void>
 struct has_period : std::false_type {};
 template <class T>
 struct has_period<T, void_t<decltype(std::declval<const T&>().period_s())>>
-    : std::bool_constant<std::is_same_v<decltype(std::declval<const T&>().period_s()), double> &&
+    : std::bool_constant<std::is_floating_point_v<decltype(std::declval<const T&>().period_s())> &&
                          noexcept(std::declval<const T&>().period_s())> {};
 
 //! The call the concept is about, spelled once: step(const Input&, Output&, Diagnostics*).
@@ -115,7 +116,7 @@ inline constexpr bool is_component_v =
                 #__VA_ARGS__ ": Status status() const noexcept missing");                                  \
   static_assert(::adcs::detail::has_reset<__VA_ARGS__>::value, #__VA_ARGS__ ": void reset() noexcept missing"); \
   static_assert(::adcs::detail::has_period<__VA_ARGS__>::value,                                             \
-                #__VA_ARGS__ ": double period_s() const noexcept missing");                                \
+                #__VA_ARGS__ ": S period_s() const noexcept (S floating point) missing");                                \
   static_assert(::adcs::detail::has_step<__VA_ARGS__>::value,                                               \
                 #__VA_ARGS__ ": Status step(const Input&, Output&, Diagnostics*) noexcept missing");       \
   static_assert(::adcs::detail::has_step_without_diagnostics<__VA_ARGS__>::value,                           \
