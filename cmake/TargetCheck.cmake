@@ -132,13 +132,26 @@ add_custom_command(OUTPUT ${_m4f_obj}
   DEPENDS ${PROJECT_SOURCE_DIR}/tests/target/m4f_float_steps.cpp ${_header_paths}
   COMMENT "arm-none-eabi-g++ (Cortex-M4F, float) m4f_float_steps.cpp" VERBATIM)
 list(APPEND _outputs ${_m4f_obj})
+# The C interface (src/c/adcs_c.cpp) for the M4F too: its static_asserts check the header's state
+# sizes on this ABI, and its float entry points must reach no double routine either.
+set(_m4f_c_obj ${_gen}/m4f_adcs_c.o)
+add_custom_command(OUTPUT ${_m4f_c_obj}
+  COMMAND ${ADCS_ARM_CXX} ${ADCS_M4F_FLAGS} -I${PROJECT_SOURCE_DIR}/include -isystem ${_eigen_inc}
+          -c ${PROJECT_SOURCE_DIR}/src/c/adcs_c.cpp -o ${_m4f_c_obj}
+  DEPENDS ${PROJECT_SOURCE_DIR}/src/c/adcs_c.cpp ${PROJECT_SOURCE_DIR}/include/adcs/c/adcs.h ${_header_paths}
+  COMMENT "arm-none-eabi-g++ (Cortex-M4F) src/c/adcs_c.cpp" VERBATIM)
+list(APPEND _outputs ${_m4f_c_obj})
 find_program(ADCS_ARM_OBJDUMP arm-none-eabi-objdump)
 find_package(Python3 COMPONENTS Interpreter)
 if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
   add_test(NAME target_m4f_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
                    ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step)
-  set_tests_properties(target_m4f_no_double PROPERTIES LABELS target FIXTURES_REQUIRED adcs_target_build)
+  add_test(NAME target_m4f_c_api_no_double
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
+                   ${_m4f_c_obj} adcs_mrp_pd4f_init adcs_mrp_pd4f_step adcs_rw_alloc4f_init adcs_rw_alloc4f_step)
+  set_tests_properties(target_m4f_no_double target_m4f_c_api_no_double PROPERTIES LABELS target
+                       FIXTURES_REQUIRED adcs_target_build)
 endif()
 
 # The compile checks in a target of their own: the custom commands of a target wait (order-only)
@@ -200,6 +213,17 @@ foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
     COMMENT "Recording the ${sys} replay inputs (${ADCS_REPLAY_STEPS} closed-loop steps)" VERBATIM)
   list(APPEND _inputs ${_rgen}/replay_inputs_${sys}.hpp)
 endforeach()
+# The C example's expected results (examples/c/cfs_reference.cpp), computed with the target's
+# arithmetic like the replay inputs, for the application the M7 runs (c_example_m7.elf).
+add_executable(adcs_c_example_reference EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/examples/c/cfs_reference.cpp
+               ${PROJECT_SOURCE_DIR}/examples/c/cubesat_plant.c)
+target_link_libraries(adcs_c_example_reference PRIVATE adcs_replay_host_flags)
+set_target_properties(adcs_c_example_reference PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
+add_custom_command(OUTPUT ${_rgen}/cfs_expected.h
+  COMMAND adcs_c_example_reference ${_rgen}/cfs_expected.h
+  DEPENDS adcs_c_example_reference
+  COMMENT "C example: the C++ components' results for the Cortex-M7 run" VERBATIM)
+list(APPEND _inputs ${_rgen}/cfs_expected.h)
 add_custom_target(adcs_replay_inputs DEPENDS ${_inputs})
 
 foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
@@ -232,7 +256,7 @@ ExternalProject_Add(adcs_target_replay
   BUILD_ALWAYS ON
   EXCLUDE_FROM_ALL ON
   DEPENDS adcs_replay_inputs
-  BUILD_BYPRODUCTS ${_elfs})
+  BUILD_BYPRODUCTS ${_elfs} ${_tdir}/c_example_m7.elf)
 
 add_dependencies(adcs_target_check adcs_target_replay adcs_replay_compare)
 foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
@@ -260,3 +284,14 @@ foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
   set_tests_properties(target_replay_${sys} target_icount_${sys} PROPERTIES
                        LABELS target FIXTURES_REQUIRED adcs_target_build TIMEOUT 600 COST 10)
 endforeach()
+
+# The C interface's example on the Cortex-M7 (examples/c/cfs_app.c over src/c/adcs_c.cpp, both
+# cross-compiled): the application checks its commands against the host C++ results itself and
+# exits non-zero on any difference beyond its tolerance.
+if(ADCS_QEMU)
+  add_test(NAME target_c_example_m7
+           COMMAND ${ADCS_QEMU} -M mps2-an500 -nographic -monitor none -serial none
+                   -semihosting-config enable=on,target=native -kernel ${_tdir}/c_example_m7.elf)
+  set_tests_properties(target_c_example_m7 PROPERTIES LABELS target FIXTURES_REQUIRED adcs_target_build
+                       TIMEOUT 300 PASS_REGULAR_EXPRESSION "passed" FAIL_REGULAR_EXPRESSION "FAILED")
+endif()

@@ -1,0 +1,177 @@
+/* adcs C interface (C99): the flight laws of include/adcs for C flight frameworks (NASA cFS
+ * applications and the like), without heap or exceptions crossing the boundary.
+ *
+ * Each controller family has
+ *   - a parameter struct, an input struct and an output struct of plain C arrays in SI units,
+ *     named as in the C++ headers (sigma_BN, omega_BN_B, ...). Matrices are row-major C arrays:
+ *     P[i][j] is row i, column j; G_s_B[i][j] is the B-frame component i of wheel j's spin axis;
+ *   - an opaque state the CALLER allocates (static storage, a task's stack, a cFS app's global),
+ *     of the size and alignment given by ADCS_<FAMILY>_STATE_SIZE / _ALIGN: the C++ component
+ *     plus a 4-byte init tag, rounded up to the alignment. The library checks these constants
+ *     against the C++ types at compile time (src/c/adcs_c.cpp, static_assert: equality), on every
+ *     platform it is built for (x86-64, Cortex-M7 double, Cortex-M4F single precision; the same
+ *     numbers on all three);
+ *   - adcs_<family>_init(params, state): validates the parameters and constructs the controller in
+ *     the state. It returns ADCS_STATUS_OK, or ADCS_STATUS_INVALID_PARAMETER for a refused set
+ *     (the state is then initialised but every step refuses to run and commands the safe output);
+ *   - adcs_<family>_step(state, in, out): one sample at the family's period. The returned status
+ *     is the C++ step's (adcs::Status), with the numeric values promised below. The output is
+ *     always finite: on a failed step it is the family's failure command (zero torque by default,
+ *     or the last good command, params.on_failure). A NULL pointer, or a state that init never
+ *     wrote, returns ADCS_STATUS_INVALID_PARAMETER and writes nothing.
+ *   No call allocates, blocks, or throws; every call is reentrant for distinct states.
+ *
+ * Families: MRP PD with reaction-wheel momentum feedback (4 wheels; the attitude law of the
+ * rigid-wheel scenarios, `adcs::MrpPd<4, S>`) and the reaction-wheel torque allocation
+ * (`adcs::RwTorqueAllocator<4, S>`), each in double (suffix none) and single precision (suffix f,
+ * for FPUs without double: Cortex-M4F). The other families follow as their float instantiations
+ * land (docs/TARGET.md).
+ */
+#ifndef ADCS_C_ADCS_H
+#define ADCS_C_ADCS_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Status: the numeric values are part of the ABI and never change. ----------------------- */
+typedef int32_t adcs_status;
+#define ADCS_STATUS_OK 0                  /* result computed as specified */
+#define ADCS_STATUS_NON_FINITE_INPUT 1    /* NaN/Inf in the input: failure command, state untouched */
+#define ADCS_STATUS_OUT_OF_RANGE 2        /* finite input outside its domain: failure command */
+#define ADCS_STATUS_SINGULAR 3            /* a matrix to invert was singular */
+#define ADCS_STATUS_ILL_CONDITIONED 4     /* usable: a regularised result */
+#define ADCS_STATUS_CONSTRAINT_VIOLATED 5 /* usable: a constraint was reached */
+#define ADCS_STATUS_SATURATED 6           /* usable: the command was clipped or scaled to a limit */
+#define ADCS_STATUS_NOT_CONVERGED 7       /* a bounded iteration hit its limit */
+#define ADCS_STATUS_INVALID_PARAMETER 8   /* refused parameters, NULL pointer or uninitialised state */
+#define ADCS_STATUS_REQUEST_NOT_MET 9     /* finite bounded output that misses the request */
+
+/* Non-zero for the statuses whose output may be applied as the requested command
+ * (ok, ill_conditioned, constraint_violated, saturated); adcs::usable() in C++. */
+int adcs_status_usable(adcs_status s);
+/* Short stable name ("ok", "non_finite_input", ...); "unknown" for any other value. */
+const char* adcs_status_name(adcs_status s);
+
+/* What a failed step commands (adcs::FailurePolicy). */
+typedef int32_t adcs_failure_policy;
+#define ADCS_FAILURE_SAFE_COMMAND 0 /* the family's safe command: zero torque */
+#define ADCS_FAILURE_HOLD_LAST 1    /* the last good command (zero after init) */
+
+/* ---- Caller-allocated opaque state ---------------------------------------------------------- */
+#if defined(__cplusplus)
+#define ADCS_C_STATE(name, size, align) \
+  typedef struct name { alignas(align) unsigned char opaque[size]; } name
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L
+#define ADCS_C_STATE(name, size, align) \
+  typedef struct name { _Alignas(align) unsigned char opaque[size]; } name
+#elif defined(__GNUC__)
+#define ADCS_C_STATE(name, size, align) \
+  typedef struct name { unsigned char opaque[size] __attribute__((aligned(align))); } name
+#else
+#error "adcs.h: C99 needs __attribute__((aligned)) (GCC, clang) for the state objects; or compile as C11"
+#endif
+
+/* ---- MRP PD with gyroscopic compensation, 4 reaction wheels (adcs/control/mrp_pd.hpp) --------
+ * L_r = -K sigma_BR - P omega_BR_B + J_rw_B (domega_RN_B - omega_BN_B x omega_RN_B)
+ *       + omega_BN_B x (J_rw_B omega_BN_B + G_s_B h_s),  h_s = J_s (G_s_B^T omega_BN_B + Omega)
+ * (Schaub & Junkins eq. (8.106)-(8.110)). Runs at params.period_s. */
+typedef struct adcs_mrp_pd4_params {
+  double K;                 /* [N m] attitude gain on sigma_BR, > 0 */
+  double P[3][3];           /* [N m s] rate gain on omega_BR_B, symmetric positive definite */
+  double J_rw_B[3][3];      /* [kg m^2] J - sum J_s g g^T, B components, SPD */
+  double G_s_B[3][4];       /* [-] wheel spin axes (unit columns), B components */
+  double J_s[4];            /* [kg m^2] wheel spin inertias, >= 0 */
+  double period_s;          /* [s] sample period, > 0 */
+  adcs_failure_policy on_failure;
+} adcs_mrp_pd4_params;
+typedef struct adcs_mrp_pd4_input {
+  double sigma_BN[3];       /* [-] measured attitude MRP */
+  double omega_BN_B[3];     /* [rad/s] measured body rate, B components */
+  double Omega_rad_s[4];    /* [rad/s] wheel speeds relative to the body */
+  double sigma_RN[3];       /* [-] reference attitude MRP */
+  double omega_RN_N[3];     /* [rad/s] reference rate, N components */
+  double domega_RN_N[3];    /* [rad/s^2] reference angular acceleration, N components */
+} adcs_mrp_pd4_input;
+typedef struct adcs_mrp_pd4_output {
+  double torque_B_Nm[3];    /* [N m] commanded body torque, B components */
+} adcs_mrp_pd4_output;
+#define ADCS_MRP_PD4_STATE_SIZE 352
+#define ADCS_MRP_PD4_STATE_ALIGN 16
+ADCS_C_STATE(adcs_mrp_pd4_state, ADCS_MRP_PD4_STATE_SIZE, ADCS_MRP_PD4_STATE_ALIGN);
+adcs_status adcs_mrp_pd4_init(const adcs_mrp_pd4_params* params, adcs_mrp_pd4_state* state);
+adcs_status adcs_mrp_pd4_step(adcs_mrp_pd4_state* state, const adcs_mrp_pd4_input* in,
+                              adcs_mrp_pd4_output* out);
+
+/* The same law in single precision (every field float; the law computes in float). */
+typedef struct adcs_mrp_pd4f_params {
+  float K;
+  float P[3][3];
+  float J_rw_B[3][3];
+  float G_s_B[3][4];
+  float J_s[4];
+  float period_s;
+  adcs_failure_policy on_failure;
+} adcs_mrp_pd4f_params;
+typedef struct adcs_mrp_pd4f_input {
+  float sigma_BN[3];
+  float omega_BN_B[3];
+  float Omega_rad_s[4];
+  float sigma_RN[3];
+  float omega_RN_N[3];
+  float domega_RN_N[3];
+} adcs_mrp_pd4f_input;
+typedef struct adcs_mrp_pd4f_output {
+  float torque_B_Nm[3];
+} adcs_mrp_pd4f_output;
+#define ADCS_MRP_PD4F_STATE_SIZE 192
+#define ADCS_MRP_PD4F_STATE_ALIGN 16
+ADCS_C_STATE(adcs_mrp_pd4f_state, ADCS_MRP_PD4F_STATE_SIZE, ADCS_MRP_PD4F_STATE_ALIGN);
+adcs_status adcs_mrp_pd4f_init(const adcs_mrp_pd4f_params* params, adcs_mrp_pd4f_state* state);
+adcs_status adcs_mrp_pd4f_step(adcs_mrp_pd4f_state* state, const adcs_mrp_pd4f_input* in,
+                               adcs_mrp_pd4f_output* out);
+
+/* ---- Reaction-wheel torque allocation, 4 wheels ----------------------------------------------
+ * u_s = -G_s^+ torque_B (minimum norm), scaled as a whole into |u_s,j| <= torque_limit, which
+ * keeps the torque direction (ADCS_STATUS_SATURATED). Memoryless: no period. Its failure
+ * command is u_s = 0 (the wheels coast). */
+typedef struct adcs_rw_alloc4_params {
+  double G_s_B[3][4];       /* [-] wheel spin axes (unit columns), B components; must span R^3 */
+  double torque_limit;      /* [N m] per-wheel motor torque limit, finite, > 0 */
+} adcs_rw_alloc4_params;
+typedef struct adcs_rw_alloc4_input {
+  double torque_B_Nm[3];    /* [N m] requested body torque (the attitude law's output) */
+} adcs_rw_alloc4_input;
+typedef struct adcs_rw_alloc4_output {
+  double u_s_Nm[4];         /* [N m] motor torque on each wheel */
+} adcs_rw_alloc4_output;
+#define ADCS_RW_ALLOC4_STATE_SIZE 272
+#define ADCS_RW_ALLOC4_STATE_ALIGN 16
+ADCS_C_STATE(adcs_rw_alloc4_state, ADCS_RW_ALLOC4_STATE_SIZE, ADCS_RW_ALLOC4_STATE_ALIGN);
+adcs_status adcs_rw_alloc4_init(const adcs_rw_alloc4_params* params, adcs_rw_alloc4_state* state);
+adcs_status adcs_rw_alloc4_step(adcs_rw_alloc4_state* state, const adcs_rw_alloc4_input* in,
+                                adcs_rw_alloc4_output* out);
+
+typedef struct adcs_rw_alloc4f_params {
+  float G_s_B[3][4];
+  float torque_limit;
+} adcs_rw_alloc4f_params;
+typedef struct adcs_rw_alloc4f_input {
+  float torque_B_Nm[3];
+} adcs_rw_alloc4f_input;
+typedef struct adcs_rw_alloc4f_output {
+  float u_s_Nm[4];
+} adcs_rw_alloc4f_output;
+#define ADCS_RW_ALLOC4F_STATE_SIZE 160
+#define ADCS_RW_ALLOC4F_STATE_ALIGN 16
+ADCS_C_STATE(adcs_rw_alloc4f_state, ADCS_RW_ALLOC4F_STATE_SIZE, ADCS_RW_ALLOC4F_STATE_ALIGN);
+adcs_status adcs_rw_alloc4f_init(const adcs_rw_alloc4f_params* params, adcs_rw_alloc4f_state* state);
+adcs_status adcs_rw_alloc4f_step(adcs_rw_alloc4f_state* state, const adcs_rw_alloc4f_input* in,
+                                 adcs_rw_alloc4f_output* out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* ADCS_C_ADCS_H */
