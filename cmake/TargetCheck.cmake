@@ -215,6 +215,7 @@ foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
 endforeach()
 # The C example's expected results (examples/c/cfs_reference.cpp), computed with the target's
 # arithmetic like the replay inputs, for the application the M7 runs (c_example_m7.elf).
+enable_language(C)  # the example's plant is C (examples/c/cubesat_plant.c)
 add_executable(adcs_c_example_reference EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/examples/c/cfs_reference.cpp
                ${PROJECT_SOURCE_DIR}/examples/c/cubesat_plant.c)
 target_link_libraries(adcs_c_example_reference PRIVATE adcs_replay_host_flags)
@@ -285,13 +286,34 @@ foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
                        LABELS target FIXTURES_REQUIRED adcs_target_build TIMEOUT 600 COST 10)
 endforeach()
 
-# The C interface's example on the Cortex-M7 (examples/c/cfs_app.c over src/c/adcs_c.cpp, both
-# cross-compiled): the application checks its commands against the host C++ results itself and
+# The Cortex-M4F: the same cross project with ADCS_ARM_CPU=cortex-m4f (only the C example so far,
+# tests/target/CMakeLists.txt), run under QEMU mps2-an386.
+ExternalProject_Add(adcs_target_m4f
+  SOURCE_DIR ${_tr}
+  BINARY_DIR ${CMAKE_BINARY_DIR}/target-m4f
+  PREFIX ${CMAKE_BINARY_DIR}/target-m4f-ep
+  CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/arm-none-eabi.cmake -DADCS_ARM_CPU=cortex-m4f
+             -DCMAKE_BUILD_TYPE=Release -DADCS_SOURCE_DIR=${PROJECT_SOURCE_DIR}
+             -DADCS_EIGEN_INCLUDE_DIR=${_eigen_inc0} -DADCS_REPLAY_GEN_DIR=${_rgen}
+  BUILD_COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR}/target-m4f -j ${ADCS_TARGET_BUILD_JOBS}
+  INSTALL_COMMAND ""
+  BUILD_ALWAYS ON
+  EXCLUDE_FROM_ALL ON
+  DEPENDS adcs_replay_inputs
+  BUILD_BYPRODUCTS ${CMAKE_BINARY_DIR}/target-m4f/c_example_m4f.elf)
+add_dependencies(adcs_target_check adcs_target_m4f)
+
+# The C interface's example on the Cortex-M7 and the Cortex-M4F (examples/c/cfs_app.c over
+# src/c/adcs_c.cpp, both cross-compiled): the application checks its commands against the host C++ results itself and
 # exits non-zero on any difference beyond its tolerance.
 if(ADCS_QEMU)
   add_test(NAME target_c_example_m7
            COMMAND ${ADCS_QEMU} -M mps2-an500 -nographic -monitor none -serial none
                    -semihosting-config enable=on,target=native -kernel ${_tdir}/c_example_m7.elf)
-  set_tests_properties(target_c_example_m7 PROPERTIES LABELS target FIXTURES_REQUIRED adcs_target_build
-                       TIMEOUT 300 PASS_REGULAR_EXPRESSION "passed" FAIL_REGULAR_EXPRESSION "FAILED")
+  add_test(NAME target_c_example_m4f
+           COMMAND ${ADCS_QEMU} -M mps2-an386 -nographic -monitor none -serial none
+                   -semihosting-config enable=on,target=native -kernel ${CMAKE_BINARY_DIR}/target-m4f/c_example_m4f.elf)
+  set_tests_properties(target_c_example_m7 target_c_example_m4f PROPERTIES LABELS target
+                       FIXTURES_REQUIRED adcs_target_build TIMEOUT 300
+                       PASS_REGULAR_EXPRESSION "passed" FAIL_REGULAR_EXPRESSION "FAILED")
 endif()

@@ -17,7 +17,17 @@ set(CMAKE_OBJCOPY arm-none-eabi-objcopy CACHE FILEPATH "objcopy")
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
 # Cortex-M7, FPv5 with 16 double-precision registers (the M7's optional DP FPU), hard-float ABI.
-set(ADCS_ARM_CPU_FLAGS "-mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard -mthumb")
+# ADCS_ARM_CPU: cortex-m7 (default; double-precision FPU, QEMU mps2-an500) or cortex-m4f
+# (single-precision FPU only, QEMU mps2-an386: issue 19's float target).
+set(ADCS_ARM_CPU "cortex-m7" CACHE STRING "Target core: cortex-m7 or cortex-m4f")
+list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES ADCS_ARM_CPU)
+if(ADCS_ARM_CPU STREQUAL "cortex-m7")
+  set(ADCS_ARM_CPU_FLAGS "-mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard -mthumb")
+elseif(ADCS_ARM_CPU STREQUAL "cortex-m4f")
+  set(ADCS_ARM_CPU_FLAGS "-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard -mthumb")
+else()
+  message(FATAL_ERROR "ADCS_ARM_CPU must be cortex-m7 or cortex-m4f, got '${ADCS_ARM_CPU}'")
+endif()
 # Flight-code flags: no exceptions/RTTI/thread-safe statics, per-function sections for
 # --gc-sections, Eigen's heap forbidden. -ffp-contract=off: no a*b+c -> VFMA.F64 fusion. GCC 12
 # contracts by default in C++ even with -std=c++17 (checked: a*b+c gives vfma.f64; its ISO-mode
