@@ -173,7 +173,11 @@ endif()
 # Every core (24 GiB on the 2-core CI machine; one seed-004 unit needs ~2 GB of RAM).
 cmake_host_system_information(RESULT _ncores QUERY NUMBER_OF_LOGICAL_CORES)
 set(ADCS_TARGET_BUILD_JOBS ${_ncores} CACHE STRING "Parallel jobs of the nested Cortex-M7 build")
-set(ADCS_REPLAY_SYSTEMS hybrid ppc se3 dragfree)
+set(ADCS_REPLAY_SYSTEMS hybrid ppc se3 dragfree attitude)
+# Float Systems, replayed on the Cortex-M4F (issue 19).
+set(ADCS_REPLAY_SYSTEMS_M4F attitude_f)
+set(_api_attitude replay::kAttitude)
+set(_api_attitude_f replay::kAttitudeF)
 set(_api_hybrid replay::kHybrid)
 set(_api_ppc replay::kPpc)
 set(_api_se3 replay::kSe3)
@@ -194,7 +198,7 @@ target_compile_options(adcs_replay_host_flags INTERFACE -ffp-contract=off)
 target_compile_definitions(adcs_replay_host_flags INTERFACE EIGEN_DONT_VECTORIZE)
 target_include_directories(adcs_replay_host_flags INTERFACE ${_tr} ${PROJECT_SOURCE_DIR}/src)  # scenarios/seed003_data.hpp
 target_link_libraries(adcs_replay_host_flags INTERFACE adcs::adcs adcs_warnings)
-foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)
   add_library(adcs_replay_core_${sys} OBJECT EXCLUDE_FROM_ALL ${_tr}/replay_${sys}.cpp)
   target_link_libraries(adcs_replay_core_${sys} PUBLIC adcs_replay_host_flags)
 endforeach()
@@ -205,7 +209,7 @@ target_include_directories(adcs_record_inputs PRIVATE ${PROJECT_SOURCE_DIR}/src)
 target_link_libraries(adcs_record_inputs PRIVATE adcs_replay_host_flags)
 set_target_properties(adcs_record_inputs PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
 set(_inputs)
-foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)
   target_link_libraries(adcs_record_inputs PRIVATE adcs_replay_core_${sys})
   add_custom_command(OUTPUT ${_rgen}/replay_inputs_${sys}.hpp
     COMMAND adcs_record_inputs ${sys} ${_rgen}/replay_inputs_${sys}.hpp ${ADCS_REPLAY_STEPS}
@@ -227,7 +231,7 @@ add_custom_command(OUTPUT ${_rgen}/cfs_expected.h
 list(APPEND _inputs ${_rgen}/cfs_expected.h)
 add_custom_target(adcs_replay_inputs DEPENDS ${_inputs})
 
-foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)
   add_executable(replay_${sys}_host EXCLUDE_FROM_ALL ${_tr}/replay_main.cpp ${_rgen}/replay_inputs_${sys}.hpp)
   target_compile_definitions(replay_${sys}_host PRIVATE ADCS_REPLAY_API=${_api_${sys}}
                              "ADCS_REPLAY_INPUTS=\"replay_inputs_${sys}.hpp\"")
@@ -260,7 +264,7 @@ ExternalProject_Add(adcs_target_replay
   BUILD_BYPRODUCTS ${_elfs} ${_tdir}/c_example_m7.elf)
 
 add_dependencies(adcs_target_check adcs_target_replay adcs_replay_compare)
-foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS)
+foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)
   add_dependencies(adcs_target_check replay_${sys}_host)
 endforeach()
 
@@ -300,8 +304,30 @@ ExternalProject_Add(adcs_target_m4f
   BUILD_ALWAYS ON
   EXCLUDE_FROM_ALL ON
   DEPENDS adcs_replay_inputs
-  BUILD_BYPRODUCTS ${CMAKE_BINARY_DIR}/target-m4f/c_example_m4f.elf)
+  BUILD_BYPRODUCTS ${CMAKE_BINARY_DIR}/target-m4f/c_example_m4f.elf ${CMAKE_BINARY_DIR}/target-m4f/replay_attitude_f.elf
+                   ${CMAKE_BINARY_DIR}/target-m4f/replay_baseline.elf)
 add_dependencies(adcs_target_check adcs_target_m4f)
+# The float replays on the M4F: host float vs QEMU mps2-an386, and the instruction counts
+# (bench/target-costs.json, "systems_m4f"). Tolerance 1e-6: the host core is compiled with the
+# target's arithmetic (no FMA contraction, no SSE reordering), so the float results are expected
+# bit for bit (measured: identical); 1e-6 is ~16 float roundings (2^-24 ~ 6e-8), room for a
+# libm that rounds differently, far below any change of behaviour.
+if(ADCS_QEMU)
+  foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS_M4F)
+    add_test(NAME target_replay_m4f_${sys}
+             COMMAND ${CMAKE_COMMAND} -DMODE=compare -DNAME=${sys} -DHOST=$<TARGET_FILE:replay_${sys}_host>
+                     -DELF=${CMAKE_BINARY_DIR}/target-m4f/replay_${sys}.elf -DQEMU=${ADCS_QEMU} -DMACHINE=mps2-an386
+                     -DCOMPARE=$<TARGET_FILE:adcs_replay_compare> -DSTEPS=${ADCS_REPLAY_STEPS} -DTOL=1e-6
+                     -DWORK=${_rdir}/m4f_${sys} -P ${_tr}/run_replay_check.cmake)
+    add_test(NAME target_icount_m4f_${sys}
+             COMMAND ${CMAKE_COMMAND} -DMODE=icount -DNAME=${sys} -DELF=${CMAKE_BINARY_DIR}/target-m4f/replay_${sys}.elf
+                     -DQEMU=${ADCS_QEMU} -DMACHINE=mps2-an386 -DSTEPS=${ADCS_REPLAY_STEPS} -DWORK=${_rdir}/m4f_${sys}
+                     -DCOSTS_JSON=${PROJECT_SOURCE_DIR}/bench/target-costs.json -DJSON_KEY=systems_m4f
+                     -P ${_tr}/run_replay_check.cmake)
+    set_tests_properties(target_replay_m4f_${sys} target_icount_m4f_${sys} PROPERTIES
+                         LABELS target FIXTURES_REQUIRED adcs_target_build TIMEOUT 600)
+  endforeach()
+endif()
 
 # The C interface's example on the Cortex-M7 and the Cortex-M4F (examples/c/cfs_app.c over
 # src/c/adcs_c.cpp, both cross-compiled): the application checks its commands against the host C++ results itself and

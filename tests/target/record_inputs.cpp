@@ -3,6 +3,7 @@
 // input of every step as a C++ header of hex-float literals (exact): replay_inputs_<name>.hpp in
 // the build tree. Usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>
 // Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
+// (attitude and attitude_f too: record_inputs <attitude|attitude_f> <out.hpp> <steps>.)
 //
 // The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
 // scenarios offer; the plant wrappers are the scenarios' own (src/scenarios/truth_plants.hpp),
@@ -11,6 +12,9 @@
 //   ppc      flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s
 //   se3      chaser + target on SE(3), state 1, disturbance, RK4 at h/10 (integrator=rk4)
 //   dragfree the 27-state exact ZOH truth with seeded noise (run seed 0 -> streams of seed 1)
+//   attitude, attitude_f  the cubesat of examples/cubesat_mrp_pd.cpp (RigidBodyRw<4>), 10 RK4
+//            steps per 0.1 s period, through its 30 deg slew; each System closes its own loop
+//            (the float law's commands differ from the double one's)
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -25,6 +29,7 @@
 #include "adcs/plant/drag_free.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
+#include "adcs/plant/rigid_body_rw.hpp"
 #include "adcs/plant/se3_spacecraft.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
@@ -237,6 +242,45 @@ Rows record_dragfree(int steps) {
   return rows;
 }
 
+// ------------------------------------------------------------------------------ issue 19
+
+Rows record_attitude(const replay::Api& sys, int steps) {
+  using Plant = RigidBodyRw<4>;
+  constexpr double kDeg = kPiRad / 180.0;
+  if (sys.init_status() != Status::ok) fail("attitude law or allocation rejected");
+  Plant::Params vehicle;
+  vehicle.J_B = Vec3(0.20, 0.25, 0.15).asDiagonal();
+  if (wheel_pyramid_axes<4>(30.0 * kDeg, vehicle.G_s_B) != Status::ok) fail("wheel pyramid");
+  vehicle.J_s = Vec<4>::Constant(2e-5);
+  const Plant plant(vehicle);
+  if (plant.status() != Status::ok) fail("cubesat plant rejected");
+  const Vec3 sigma_RN = std::tan(30.0 * kDeg / 4.0) * Vec3(1.0, 2.0, 3.0).normalized();
+  const double T = sys.period_s, h = T / 10.0;
+  Plant::State x = Plant::State::Zero();
+  Plant::Input u = Plant::Input::Zero();  // [wheel motor torques; external torque = 0]
+  Rows rows;
+  for (int k = 0; k < steps; ++k) {
+    Row row;
+    append(row, Plant::sigma_BN(x));
+    append(row, Plant::omega_BN_B(x));
+    append(row, Plant::Omega(x));
+    append(row, sigma_RN);
+    step(sys, row);
+    sys.command(u.data());
+    rows.push_back(row);
+    for (int j = 0; j < 10; ++j) {  // classical RK4, the wheel torques held
+      Plant::State k1, k2, k3, k4;
+      plant.derivative(0.0, x, u, k1);
+      plant.derivative(0.0, Plant::State(x + 0.5 * h * k1), u, k2);
+      plant.derivative(0.0, Plant::State(x + 0.5 * h * k2), u, k3);
+      plant.derivative(0.0, Plant::State(x + h * k3), u, k4);
+      x += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+      (void)plant.normalize(x);
+    }
+  }
+  return rows;
+}
+
 void write_header(const char* path, const char* name, const char* what, const Rows& rows) {
   std::FILE* f = std::fopen(path, "w");
   if (!f) fail(std::string("cannot write ") + path);
@@ -264,7 +308,7 @@ void write_header(const char* path, const char* name, const char* what, const Ro
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) fail("usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>");
+  if (argc != 4) fail("usage: record_inputs <hybrid|ppc|se3|dragfree|attitude|attitude_f> <out.hpp> <steps>");
   const std::string name = argv[1];
   const int steps = std::atoi(argv[3]);
   if (steps < 1) fail("steps must be >= 1");
@@ -283,6 +327,12 @@ int main(int argc, char** argv) {
     } else if (name == "dragfree") {
       rows = record_dragfree(steps);
       what = "seed 004 dragfree-adrc closed loop, h = 0.1 s";
+    } else if (name == "attitude") {
+      rows = record_attitude(replay::kAttitude, steps);
+      what = "cubesat MRP PD + wheel allocation closed loop (double), 10 Hz";
+    } else if (name == "attitude_f") {
+      rows = record_attitude(replay::kAttitudeF, steps);
+      what = "cubesat MRP PD + wheel allocation closed loop (float law), 10 Hz";
     } else {
       fail("unknown system " + name);
     }

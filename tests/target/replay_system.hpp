@@ -59,5 +59,7 @@ extern const Api kPpc;       // seed 002
 extern const Api kSe3;       // seed 003
 extern const Api kDragFree;  // seed 004
 extern const Api kBaseline;  // empty System (target size baseline)
+extern const Api kAttitude;   // MrpPd<4> + RwTorqueAllocator<4>, double (Cortex-M7)
+extern const Api kAttitudeF;  // the same in float (Cortex-M4F; issue 19)
 
 }  // namespace replay

@@ -30,7 +30,15 @@ foreach(v MODE NAME ELF QEMU STEPS WORK)
   endif()
 endforeach()
 file(MAKE_DIRECTORY ${WORK})
-set(_qemu ${QEMU} -M mps2-an500 -nographic -monitor none -serial none
+# MACHINE: the QEMU board (mps2-an500: Cortex-M7; mps2-an386: Cortex-M4F). JSON_KEY: the section
+# of COSTS_JSON holding this board's systems (systems, systems_m4f).
+if(NOT DEFINED MACHINE)
+  set(MACHINE mps2-an500)
+endif()
+if(NOT DEFINED JSON_KEY)
+  set(JSON_KEY systems)
+endif()
+set(_qemu ${QEMU} -M ${MACHINE} -nographic -monitor none -serial none
           -semihosting-config enable=on,target=native)
 
 if(MODE STREQUAL "compare")
@@ -78,7 +86,7 @@ elseif(MODE STREQUAL "icount")
   message(STATUS "${NAME}: ${n} steps, identical counts in two runs, max ${max} instructions per step")
   if(DEFINED COSTS_JSON AND EXISTS ${COSTS_JSON})
     file(READ ${COSTS_JSON} json)
-    string(JSON committed ERROR_VARIABLE jerr GET "${json}" systems ${NAME} instructions_per_step max)
+    string(JSON committed ERROR_VARIABLE jerr GET "${json}" ${JSON_KEY} ${NAME} instructions_per_step max)
     if(NOT jerr AND committed GREATER 0)
       math(EXPR limit "2 * ${committed}")
       if(max GREATER limit)
