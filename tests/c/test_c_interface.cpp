@@ -1,0 +1,226 @@
+// The C interface (include/adcs/c/adcs.h) from the caller's side: the promised status values,
+// the refusals (NULL, a state init never wrote, a refused parameter set, an unknown failure
+// policy), the failure commands after bad input (zero torque, or the last good command under
+// hold_last; the wheels coast), re-init, equality with the C++ components bit for bit, and no
+// heap in any step. src/c/adcs_c.cpp is compiled into this executable (tests/CMakeLists.txt) so
+// that Eigen's runtime allocation check is armed in it too.
+#ifdef NDEBUG
+#error "the C interface test must build with asserts on (EIGEN_RUNTIME_NO_MALLOC needs them)"
+#endif
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "adcs/actuator/rw_allocation.hpp"
+#include "adcs/c/adcs.h"
+#include "adcs/control/mrp_pd.hpp"
+#include "alloc_guard.hpp"  // tests/nomalloc
+#include "counting_new.hpp"
+
+namespace ADCS_UNITY_ID {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A 4-wheel pyramid and the cubesat's gains (examples/c/cfs_app.c).
+template <class P>
+void fill_axes(P& p) {
+  const double s = 1.0 / std::sqrt(3.0);
+  const double G[3][4] = {{1, 0, 0, s}, {0, 1, 0, s}, {0, 0, 1, s}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) p.G_s_B[i][j] = static_cast<decltype(p.G_s_B[0][0] + 0)>(G[i][j]);
+}
+
+template <class P>
+P law_params() {
+  P p{};
+  using T = decltype(p.K + 0);
+  p.K = T(0.04);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      p.P[i][j] = T(i == j ? 0.05 : 0.0);
+      p.J_rw_B[i][j] = T(i == j ? 0.2 + 0.01 * i : 0.0);
+    }
+  fill_axes(p);
+  for (int j = 0; j < 4; ++j) p.J_s[j] = T(2e-5);
+  p.period_s = T(0.1);
+  p.on_failure = ADCS_FAILURE_SAFE_COMMAND;
+  return p;
+}
+
+template <class I>
+I law_input(int k) {
+  I in{};
+  using T = decltype(in.sigma_BN[0] + 0);
+  const double s[3] = {0.1 + 1e-3 * k, -0.2, 0.3}, w[3] = {0.01, 0.0, -0.02}, r[3] = {0.0, 0.1, 0.0};
+  for (int i = 0; i < 3; ++i) {
+    in.sigma_BN[i] = T(s[i]);
+    in.omega_BN_B[i] = T(w[i]);
+    in.sigma_RN[i] = T(r[i]);
+    in.omega_RN_N[i] = T(i == 2 ? 1e-3 : 0.0);
+    in.domega_RN_N[i] = T(0);
+  }
+  for (int j = 0; j < 4; ++j) in.Omega_rad_s[j] = T(10.0 * (j + 1));
+  return in;
+}
+
+TEST(CInterface, StatusValuesAndNamesAreThePromisedOnes) {
+  const adcs_status all[] = {ADCS_STATUS_OK, ADCS_STATUS_NON_FINITE_INPUT, ADCS_STATUS_OUT_OF_RANGE,
+                             ADCS_STATUS_SINGULAR, ADCS_STATUS_ILL_CONDITIONED, ADCS_STATUS_CONSTRAINT_VIOLATED,
+                             ADCS_STATUS_SATURATED, ADCS_STATUS_NOT_CONVERGED, ADCS_STATUS_INVALID_PARAMETER,
+                             ADCS_STATUS_REQUEST_NOT_MET};
+  for (int v = 0; v < 10; ++v) {
+    EXPECT_EQ(all[v], v);
+    const auto s = static_cast<adcs::Status>(v);
+    EXPECT_STREQ(adcs_status_name(v), adcs::to_string(s));
+    EXPECT_EQ(adcs_status_usable(v) != 0, adcs::usable(s));
+  }
+  EXPECT_STREQ(adcs_status_name(-1), "unknown");
+  EXPECT_STREQ(adcs_status_name(10), "unknown");
+  EXPECT_EQ(adcs_status_usable(-1), 0);
+  EXPECT_EQ(adcs_status_usable(1000), 0);
+}
+
+TEST(CInterface, NullPointersAndUninitialisedStatesAreRefusedAndWriteNothing) {
+  static adcs_mrp_pd4_state never;  // static: zero, init never ran
+  const adcs_mrp_pd4_params p = law_params<adcs_mrp_pd4_params>();
+  const adcs_mrp_pd4_input in = law_input<adcs_mrp_pd4_input>(0);
+  adcs_mrp_pd4_output out = {{7.0, 8.0, 9.0}};
+  EXPECT_EQ(adcs_mrp_pd4_step(&never, &in, &out), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(out.torque_B_Nm[0], 7.0);
+  EXPECT_EQ(adcs_mrp_pd4_init(nullptr, &never), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(adcs_mrp_pd4_init(&p, nullptr), ADCS_STATUS_INVALID_PARAMETER);
+  adcs_mrp_pd4_state s;
+  ASSERT_EQ(adcs_mrp_pd4_init(&p, &s), ADCS_STATUS_OK);
+  EXPECT_EQ(adcs_mrp_pd4_step(nullptr, &in, &out), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(adcs_mrp_pd4_step(&s, nullptr, &out), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(adcs_mrp_pd4_step(&s, &in, nullptr), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(out.torque_B_Nm[2], 9.0);
+  static adcs_rw_alloc4f_state never_f;
+  const adcs_rw_alloc4f_input req = {{0.01f, 0.0f, 0.0f}};
+  adcs_rw_alloc4f_output u = {{5.0f, 5.0f, 5.0f, 5.0f}};
+  EXPECT_EQ(adcs_rw_alloc4f_step(&never_f, &req, &u), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(u.u_s_Nm[3], 5.0f);
+}
+
+TEST(CInterface, RefusedParametersGiveTheSafeCommandOnEveryStep) {
+  adcs_mrp_pd4_params p = law_params<adcs_mrp_pd4_params>();
+  p.K = kNaN;
+  adcs_mrp_pd4_state s;
+  EXPECT_EQ(adcs_mrp_pd4_init(&p, &s), ADCS_STATUS_INVALID_PARAMETER);
+  const adcs_mrp_pd4_input in = law_input<adcs_mrp_pd4_input>(0);
+  adcs_mrp_pd4_output out = {{1.0, 1.0, 1.0}};
+  EXPECT_EQ(adcs_mrp_pd4_step(&s, &in, &out), ADCS_STATUS_INVALID_PARAMETER);
+  for (double t : out.torque_B_Nm) EXPECT_EQ(t, 0.0);
+  // An unknown failure policy is refused like a NaN gain, never cast into the enum.
+  p = law_params<adcs_mrp_pd4_params>();
+  p.on_failure = 7;
+  EXPECT_EQ(adcs_mrp_pd4_init(&p, &s), ADCS_STATUS_INVALID_PARAMETER);
+  // Coplanar wheel axes do not span R^3: the allocation refuses them.
+  adcs_rw_alloc4_params a{};
+  for (int j = 0; j < 4; ++j) {
+    a.G_s_B[0][j] = std::cos(j);
+    a.G_s_B[1][j] = std::sin(j);
+    a.G_s_B[2][j] = 0.0;
+  }
+  a.torque_limit = 3e-3;
+  adcs_rw_alloc4_state as;
+  EXPECT_EQ(adcs_rw_alloc4_init(&a, &as), ADCS_STATUS_INVALID_PARAMETER);
+}
+
+TEST(CInterface, BadInputGivesTheFailureCommandOfThePolicyAndReInitResets) {
+  for (adcs_failure_policy policy : {ADCS_FAILURE_SAFE_COMMAND, ADCS_FAILURE_HOLD_LAST}) {
+    adcs_mrp_pd4_params p = law_params<adcs_mrp_pd4_params>();
+    p.on_failure = policy;
+    adcs_mrp_pd4_state s;
+    ASSERT_EQ(adcs_mrp_pd4_init(&p, &s), ADCS_STATUS_OK);
+    adcs_mrp_pd4_input in = law_input<adcs_mrp_pd4_input>(0);
+    adcs_mrp_pd4_output good{}, bad{};
+    ASSERT_EQ(adcs_mrp_pd4_step(&s, &in, &good), ADCS_STATUS_OK);
+    in.omega_BN_B[1] = kNaN;
+    EXPECT_EQ(adcs_mrp_pd4_step(&s, &in, &bad), ADCS_STATUS_NON_FINITE_INPUT);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(bad.torque_B_Nm[i], policy == ADCS_FAILURE_HOLD_LAST ? good.torque_B_Nm[i] : 0.0);
+    // Init again: a fresh controller (hold_last has nothing to hold).
+    ASSERT_EQ(adcs_mrp_pd4_init(&p, &s), ADCS_STATUS_OK);
+    EXPECT_EQ(adcs_mrp_pd4_step(&s, &in, &bad), ADCS_STATUS_NON_FINITE_INPUT);
+    for (double t : bad.torque_B_Nm) EXPECT_EQ(t, 0.0);
+  }
+  adcs_rw_alloc4_params a{};
+  fill_axes(a);
+  a.torque_limit = 3e-3;
+  adcs_rw_alloc4_state as;
+  ASSERT_EQ(adcs_rw_alloc4_init(&a, &as), ADCS_STATUS_OK);
+  adcs_rw_alloc4_input req = {{1.0, -2.0, 0.5}};  // far above what 3 mN m wheels give
+  adcs_rw_alloc4_output u{};
+  EXPECT_EQ(adcs_rw_alloc4_step(&as, &req, &u), ADCS_STATUS_SATURATED);
+  for (double x : u.u_s_Nm) EXPECT_LE(std::fabs(x), 3e-3);
+  req.torque_B_Nm[2] = kNaN;
+  EXPECT_EQ(adcs_rw_alloc4_step(&as, &req, &u), ADCS_STATUS_NON_FINITE_INPUT);
+  for (double x : u.u_s_Nm) EXPECT_EQ(x, 0.0);  // the wheels coast
+}
+
+// Bit for bit the C++ components', in both scalars, with the heap forbidden.
+template <class S, class CParams, class CState, class CInput, class COutput, class Init, class Step>
+void expect_law_equals_cpp(Init init, Step step) {
+  const CParams cp = law_params<CParams>();
+  CState cs;
+  ASSERT_EQ(init(&cp, &cs), ADCS_STATUS_OK);
+  adcs::MrpPdParams<4, S> p;
+  p.K = cp.K;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      p.P(i, j) = cp.P[i][j];
+      p.J_rw_B(i, j) = cp.J_rw_B[i][j];
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) p.G_s_B(i, j) = cp.G_s_B[i][j];
+  for (int j = 0; j < 4; ++j) p.J_s(j) = cp.J_s[j];
+  p.period_s = cp.period_s;
+  adcs::MrpPd<4, S> cpp(p);
+  ASSERT_EQ(cpp.status(), adcs::Status::ok);
+  long allocations = 0;
+  for (int k = 0; k < 20; ++k) {
+    const CInput ci = law_input<CInput>(k);
+    typename adcs::MrpPd<4, S>::Input in;
+    for (int i = 0; i < 3; ++i) {
+      in.state.sigma_BN(i) = ci.sigma_BN[i];
+      in.state.omega_BN_B(i) = ci.omega_BN_B[i];
+      in.reference.sigma_RN(i) = ci.sigma_RN[i];
+      in.reference.omega_RN_N(i) = ci.omega_RN_N[i];
+      in.reference.domega_RN_N(i) = ci.domega_RN_N[i];
+    }
+    for (int j = 0; j < 4; ++j) in.Omega_rad_s(j) = ci.Omega_rad_s[j];
+    COutput co{};
+    adcs::BodyTorqueT<S> out;
+    adcs_status s = 0;
+    {
+      adcs::test::NoAllocScope scope;
+      s = step(&cs, &ci, &co);
+      allocations += scope.allocations();
+    }
+    ASSERT_EQ(s, static_cast<adcs_status>(cpp.step(in, out)));
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(std::memcmp(&co.torque_B_Nm[i], &out.torque_B_Nm(i), sizeof(S)), 0);
+  }
+  EXPECT_EQ(allocations, 0);
+}
+
+TEST(CInterface, MrpPdEqualsTheCppComponentBitForBitWithoutHeap) {
+  expect_law_equals_cpp<double, adcs_mrp_pd4_params, adcs_mrp_pd4_state, adcs_mrp_pd4_input, adcs_mrp_pd4_output>(
+      adcs_mrp_pd4_init, adcs_mrp_pd4_step);
+  expect_law_equals_cpp<float, adcs_mrp_pd4f_params, adcs_mrp_pd4f_state, adcs_mrp_pd4f_input, adcs_mrp_pd4f_output>(
+      adcs_mrp_pd4f_init, adcs_mrp_pd4f_step);
+}
+
+TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
+  EXPECT_EQ(sizeof(adcs_mrp_pd4_state), 352u);
+  EXPECT_EQ(sizeof(adcs_mrp_pd4f_state), 192u);
+  EXPECT_EQ(sizeof(adcs_rw_alloc4_state), 272u);
+  EXPECT_EQ(sizeof(adcs_rw_alloc4f_state), 160u);
+  EXPECT_EQ(alignof(adcs_mrp_pd4_state), 16u);
+  EXPECT_EQ(alignof(adcs_rw_alloc4f_state), 16u);
+}
+
+}  // namespace ADCS_UNITY_ID
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
