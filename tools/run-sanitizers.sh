@@ -20,8 +20,8 @@
 #        arithmetic checks (overflow, float-cast, shifts, division, bounds, bool/enum,
 #        return/unreachable) stay on everywhere; the standalone fuzz campaigns
 #        (tools/run-fuzzers.sh) run the full UBSan.
-#   -O1 for the unit and no-allocation tests (ADCS_FLIGHT_TEST_OPT): they run milliseconds of
-#        flight code each; ~7 % less compile time than -O2.
+#   -O1 for the unit tests (ADCS_FLIGHT_TEST_OPT): they run milliseconds of flight code each;
+#        ~7 % less compile time than -O2. The no-allocation test is -O0 in every build.
 #   No debug info (CMAKE_CXX_FLAGS_DEBUG empty): a report names each frame's function (symbol
 #        table); -gline-tables-only, which adds file:line, cost ~12 % of this tree's compile time
 #        (docs/DECISIONS.md, "CI under 20 minutes"). For file:line, reconfigure with
