@@ -3,7 +3,7 @@
 # UndefinedBehaviorSanitizer (clang++-14), plus the libFuzzer harnesses (ADCS_FUZZ=ON: ctest label
 # fuzz, tests/fuzz/CMakeLists.txt): every unit, property, harness, CLI, parameter, foundation- and
 # fault-scenario, no-allocation and install-consumer test, and the papers' closed loops and their
-# claims (adcs_claim_tests), with any sanitizer report fatal (halt_on_error,
+# claims (adcs_claim_tests; the scenario libraries without ASan, see below), with any sanitizer report fatal (halt_on_error,
 # -fno-sanitize-recover=undefined). Called by tools/run-tests.sh after the Release suite.
 #   clang++-14, not g++: the same -O1 ASan+UBSan build of the Eigen-heavy tests compiles ~3-4x
 #        faster (measured per translation unit: g++ -O1 -g 138 s, clang++ -O1 -g 36 s), which is
@@ -22,6 +22,13 @@
 #        (tools/run-fuzzers.sh) run the full UBSan.
 #   -O1 for the unit tests (ADCS_FLIGHT_TEST_OPT): they run milliseconds of flight code each;
 #        ~7 % less compile time than -O2. The no-allocation test is -O0 in every build.
+#   The scenario libraries (src/scenarios: the closed loops of the claim, fault and vehicle tests)
+#        without ASan, with UBSan, armed asserts and -D_GLIBCXX_ASSERTIONS
+#        (ADCS_SCENARIO_COMPILE_OPTIONS): ASan made the loops ~2.5x slower than the same code
+#        without sanitizers, and their hot path is fixed-size Eigen code on the stack, which the
+#        unit, no-allocation and fuzz tests run under ASan; an out-of-range index there is
+#        Eigen's armed assert, a container's is libstdc++'s. The harness (src/sim), the ground
+#        code and every test's own code keep ASan.
 #   No debug info (CMAKE_CXX_FLAGS_DEBUG empty): a report names each frame's function (symbol
 #        table); -gline-tables-only, which adds file:line, cost ~12 % of this tree's compile time
 #        (docs/DECISIONS.md, "CI under 20 minutes"). For file:line, reconfigure with

@@ -9,7 +9,8 @@
 #      instruction counts and adcs-bench (adcs-sim only when run-main asks for it);
 #   3. ASan + UBSan tree (clang++-14, -Werror), build-asan (tools/run-sanitizers.sh): every unit,
 #      no-allocation, harness, CLI, parameter, foundation- and fault-scenario and install test,
-#      the papers' closed loops and their claims (adcs_claim_tests), the example programs
+#      the papers' closed loops and their claims (adcs_claim_tests; the scenario libraries with
+#      UBSan and asserts but without ASan), the example programs
 #      (examples/, which check their own results), and the five libFuzzer harnesses replaying
 #      their committed corpora plus new inputs.
 # Each test is built in the one tree where it is needed (docs/DECISIONS.md, "Each test in one
