@@ -132,6 +132,19 @@ add_custom_command(OUTPUT ${_m4f_obj}
   DEPENDS ${PROJECT_SOURCE_DIR}/tests/target/m4f_float_steps.cpp ${_header_paths}
   COMMENT "arm-none-eabi-g++ (Cortex-M4F, float) m4f_float_steps.cpp" VERBATIM)
 list(APPEND _outputs ${_m4f_obj})
+# The same unit with every float class instantiated whole (seed 001's constructor included), by
+# the clang of 1a with the M4F's -mcpu/-mfpu, -fsyntax-only: the warnings without the ~70
+# arm-none-eabi-g++ CPU-s of code generation for a start-up-only design (docs/DECISIONS.md).
+if(_clang_arm)
+  string(REPLACE "-mcpu=cortex-m7;-mfpu=fpv5-d16" "-mcpu=cortex-m4;-mfpu=fpv4-sp-d16" _m4f_clang "${_clang_arm}")
+  add_custom_command(OUTPUT ${_gen}/m4f_float_whole.ok
+    COMMAND ${_m4f_clang} -fsyntax-only -Wdouble-promotion -Wfloat-conversion -DADCS_M4F_WHOLE_CLASS
+            -I${PROJECT_SOURCE_DIR}/include -isystem ${_eigen_inc} ${PROJECT_SOURCE_DIR}/tests/target/m4f_float_steps.cpp
+    COMMAND ${CMAKE_COMMAND} -E touch ${_gen}/m4f_float_whole.ok
+    DEPENDS ${PROJECT_SOURCE_DIR}/tests/target/m4f_float_steps.cpp ${_header_paths}
+    COMMENT "clang++ --target=arm-none-eabi (Cortex-M4F) -fsyntax-only m4f_float_steps.cpp, whole classes" VERBATIM)
+  list(APPEND _outputs ${_gen}/m4f_float_whole.ok)
+endif()
 # The C interface (src/c/adcs_c.cpp) for the M4F too: its static_asserts check the header's state
 # sizes on this ABI, and its float entry points must reach no double routine either.
 set(_m4f_c_obj ${_gen}/m4f_adcs_c.o)
@@ -146,7 +159,7 @@ find_package(Python3 COMPONENTS Interpreter)
 if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
   add_test(NAME target_m4f_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
-                   ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step)
+                   ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step adcs_m4f_hybrid_adaptive_step)
   add_test(NAME target_m4f_c_api_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
                    ${_m4f_c_obj} adcs_mrp_pd4f_init adcs_mrp_pd4f_step adcs_rw_alloc4f_init adcs_rw_alloc4f_step)

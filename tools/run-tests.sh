@@ -47,10 +47,12 @@ build=${1:-"$root/build"}
 # clang++-14 like the other trees: the bench's step fixtures and the host replay cores took ~540
 # g++ CPU-s here, about half that with clang (docs/DECISIONS.md, "CI under 20 minutes"). g++
 # still compiles every flight header with -Werror: arm-none-eabi-g++ 12 (the host's g++
-# version) in the Cortex-M7 units and replays.
+# version) in the Cortex-M7 units and replays. The host C library (adcs_c) is built and tested
+# in the ASan tree (the C example, adcs_c_tests); here it would only be compiled (~40 CPU-s).
 phase configure cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_COMPILER=clang++-14 -DADCS_WERROR=ON \
-  -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=OFF -DADCS_BUILD_EXAMPLES=OFF
+  -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=OFF -DADCS_BUILD_EXAMPLES=OFF \
+  -DADCS_BUILD_C=OFF
 # The Cortex-M7 programs (ExternalProject, not in ALL) are built here with the rest rather than
 # inside ctest's target_compile_check, so the build phase shows their time and both cores share
 # them with the host objects.

@@ -33,7 +33,9 @@ namespace ADCS_UNITY_ID {
 
 constexpr int kM = 4, kN = 3;
 using FullPlant = VscmgFullPlant<kM, kN>;
-using Controller = HybridAdaptive<kM, kN>;
+//! The law in the scalar of `--set scalar` (issue 19); the plant stays double under the integrator.
+template <class S>
+using Controller = HybridAdaptive<kM, kN, S>;
 
 
 constexpr const char* kA5 = "assumed (spec A.5)";
@@ -62,7 +64,7 @@ struct HybridConfig {
   Variant variant = Variant::paper;
 
   double duration_s = 0, fault_time_s = 0, fault_actuator = 0, fdir_delay_s = 0, control_period_s = 0;
-  std::string fdir, deviation, integrator, initial_estimates, adaptation_step, H_I_n, baseline;
+  std::string fdir, deviation, integrator, initial_estimates, adaptation_step, H_I_n, baseline, scalar;
   Vec3 J_s_diag_kgm2 = Vec3::Zero(), I_c_sgt_kgm2 = Vec3::Zero(), tau_ext_Nm = Vec3::Zero();
   Vec3 Kp_diag = Vec3::Zero(), Kd_diag = Vec3::Zero();
   double h_cw_Nms = 0, I_wws_kgm2 = 0, deviation_seed = 0, deviation_max = 0, deviation_rot_max_rad = 0;
@@ -146,6 +148,7 @@ struct HybridConfig {
     if (adaptive && fault == Fault::none)
       f.name("baseline", baseline, "run", {"run", "skip"},
              "run: also simulate alpha_F = alpha_G = 0 for the R5 improvement ratio");
+    f.name("scalar", scalar, "double", {"double", "float"}, kScalarHelp);
   }
 };
 
@@ -254,10 +257,20 @@ class HybridScenario final : public Scenario {
     return c;
   }
 
-  //! One closed-loop run. `overlay` (optional) adds the no-adaptation errors as CSV columns;
-  //! `capture` (optional) stores this run's per-sample errors for such an overlay.
+  //! One closed-loop run with the law in the scalar `scalar` names.
   RunResult simulate(const ParamSet& p, const RunContext& ctx, const BaselineTrace* overlay,
                      BaselineTrace* capture) const {
+    return read_config(p, prototype()).scalar == "float" ? simulate_as<float>(p, ctx, overlay, capture)
+                                                         : simulate_as<double>(p, ctx, overlay, capture);
+  }
+
+  //! One closed-loop run. `overlay` (optional) adds the no-adaptation errors as CSV columns;
+  //! `capture` (optional) stores this run's per-sample errors for such an overlay. The law runs
+  //! in S: its parameters, inputs and outputs cross the boundary through cast<S>() and back.
+  template <class S>
+  RunResult simulate_as(const ParamSet& p, const RunContext& ctx, const BaselineTrace* overlay,
+                        BaselineTrace* capture) const {
+    using Ctrl = Controller<S>;
     const HybridConfig c = read_config(p, prototype());
     // --- configuration (spec §A.5) ---
     VscmgGeometry<kM, kN> nominal = pyramid_4cmg_3rw_nominal();
@@ -328,7 +341,7 @@ class HybridScenario final : public Scenario {
     if (!(u_limit.array() >= 0.0).all()) throw ParamError("actuator limits must be >= 0 (0 = none)");
 
     const double T = c.control_period_s;
-    Controller::Params cp;
+    HybridAdaptiveParams<kM, kN> cp;
     cp.nominal = nominal;
     cp.alpha_F = c.alpha_F;
     cp.alpha_G = c.alpha_G;
@@ -350,14 +363,15 @@ class HybridScenario final : public Scenario {
     // H_I^n from the nominal model at t = 0 (σ = 0, ω = 0, γ = 0).
     const Vec3 H_n_model = nominal.internal_momentum(Vec<kM>::Zero(), Vec<kM>::Zero(), Omega0);
     cp.H_I_n = c.H_I_n == "zero" ? Vec3::Zero() : H_n_model;
-    Controller ctrl(cp);
+    Ctrl ctrl(cp.template cast<S>());
     if (ctrl.status() != Status::ok) throw ParamError("controller parameters rejected (alpha, beta, delta, gains)");
     if (c.initial_estimates == "truth") {  // spec §A.7 S11: the oracle controller
       Mat<6, kM> th_c;
       Mat<3, kN> th_w;
       for (int i = 0; i < kM; ++i) th_c.col(i) = dev.theta_cG(i);
       for (int j = 0; j < kN; ++j) th_w.col(j) = dev.theta_wG(j);
-      if (ctrl.set_estimates(Vec3(H_true - cp.H_I_n), th_c, th_w) != Status::ok)
+      if (ctrl.set_estimates(scalar_cast<S>(Vec3(H_true - cp.H_I_n)), scalar_cast<S>(th_c), scalar_cast<S>(th_w)) !=
+          Status::ok)
         throw ParamError("initial_estimates=truth: deviations outside the projection ball");
     }
 
@@ -428,17 +442,18 @@ class HybridScenario final : public Scenario {
           throw SimError("hybrid fault: actuator mask rejected");
         fdir_applied = true;
       }
-      Controller::Input m;
+      HybridAdaptiveInput<kM, kN> m;
       m.state.sigma_BN = FullPlant::sigma_BN(xp);
       m.state.omega_BN_B = plant.omega_BN_B(xp, u_held);  // ω with the γ̇ held over the last period
       m.actuators.gamma_rad = FullPlant::gamma(xp);
       m.actuators.Omega_rad_s = FullPlant::Omega_w(xp);
       m.reference = ref.sample(t, xs.tail<3>());
-      return m;
+      return m.template cast<S>();  // beyond float range: ±Inf (core/types.hpp narrow_scalar)
     };
-    auto to_actuation = [](double, const HybridSimPlant::State&, const Controller::Output& cmd) { return cmd; };
-    auto to_plant = [&](double t, const HybridSimPlant::State&, const Controller::Output& cmd, HybridSimPlant::Input& u) {
-      u = cmd.stacked();
+    using Output = typename Ctrl::Output;
+    auto to_actuation = [](double, const HybridSimPlant::State&, const Output& cmd) { return cmd; };
+    auto to_plant = [&](double t, const HybridSimPlant::State&, const Output& cmd, HybridSimPlant::Input& u) {
+      u = cmd.stacked().template cast<double>();
       if (saturate_each<kM + kN>(u, u_limit) > 0) ++limit_hits;  // spec A.5: flag if hit
       if (t >= t_fault) u(k_fail) = 0.0;  // frozen gimbal (γ̇ = 0) / lost wheel (no torque)
     };
@@ -449,11 +464,11 @@ class HybridScenario final : public Scenario {
       if (!s.final) {  // once per control step
         if (s.controller_status != Status::ok) ++nonok;
         statuses.add(s.controller_status);
-        const Vec<kM + kN> commanded = s.command.stacked();
+        const Vec<kM + kN> commanded = s.command.stacked().template cast<double>();
         if (!all_finite(commanded)) ++nonfinite_cmd;
         if (fdir_applied) failed_cmd_after_fdir = std::max(failed_cmd_after_fdir, std::abs(commanded(k_fail)));
-        gimbal_rate_peak = std::max(gimbal_rate_peak, s.command.gamma_dot_rad_s.cwiseAbs().maxCoeff());
-        wheel_accel_peak = std::max(wheel_accel_peak, s.command.Omega_dot_rad_s2.cwiseAbs().maxCoeff());
+        gimbal_rate_peak = std::max(gimbal_rate_peak, commanded.head<kM>().cwiseAbs().maxCoeff());
+        wheel_accel_peak = std::max(wheel_accel_peak, commanded.tail<kN>().cwiseAbs().maxCoeff());
       }
       const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
       const Vec3 sigma = FullPlant::sigma_BN(xp);
@@ -462,7 +477,8 @@ class HybridScenario final : public Scenario {
       const double e_att = ypr.cwiseAbs().maxCoeff();
       const double e_p = mrp_principal_angle(dcm_to_mrp(C_e));
       const double e_rate = (plant.omega_BN_B(xp, u) - C_e * ref.omega(t)).norm();  // spec #28
-      const Vec3 H_est = cp.H_I_n + ctrl.theta_F();
+      const Vec3 theta_F = ctrl.theta_F().template cast<double>();
+      const Vec3 H_est = cp.H_I_n + theta_F;
       const Vec3 H_now = plant.momentum_N(xp);  // = H_true(0) when τ_ext = 0 (spec S4)
       const double E_H = (H_est - H_now).norm();
       const Vec3 torque_N = mrp_to_dcm(sigma).transpose() * tau_ext;  // spec S4: d/dt(Cᵀh) = Cᵀτ
@@ -483,8 +499,8 @@ class HybridScenario final : public Scenario {
         e_p_pre = std::max(e_p_pre, e_p);
       }
       E_H_final = E_H;
-      for (int i = 0; i < kM; ++i) proj_max = std::max(proj_max, ctrl.theta_cG(i).squaredNorm());
-      for (int j = 0; j < kN; ++j) proj_max = std::max(proj_max, ctrl.theta_wG(j).squaredNorm());
+      for (int i = 0; i < kM; ++i) proj_max = std::max(proj_max, double(ctrl.theta_cG(i).squaredNorm()));
+      for (int j = 0; j < kN; ++j) proj_max = std::max(proj_max, double(ctrl.theta_wG(j).squaredNorm()));
       const double pinv_sigma_min = s.controller_diagnostics.steering.pinv.sigma_min;
       if (t > 0.0) sigma_min = std::min(sigma_min, pinv_sigma_min);
       gimbal_max = std::max(gimbal_max, FullPlant::gamma(xp).cwiseAbs().maxCoeff());
@@ -498,11 +514,11 @@ class HybridScenario final : public Scenario {
         row.assign({t, ypr(2), ypr(1), ypr(0), e_p, e_rate});
         for (int i = 0; i < kM; ++i) row.push_back(FullPlant::gamma(xp)(i));
         for (int j = 0; j < kN; ++j) row.push_back(FullPlant::Omega_w(xp)(j));
-        for (int k = 0; k < 3; ++k) row.push_back(ctrl.theta_F()(k));
+        for (int k = 0; k < 3; ++k) row.push_back(theta_F(k));
         for (int k = 0; k < 3; ++k) row.push_back(H_est(k));
         for (int k = 0; k < 3; ++k) row.push_back(H_now(k));
-        for (int i = 0; i < kM; ++i) row.push_back(ctrl.theta_cG(i).squaredNorm());
-        for (int j = 0; j < kN; ++j) row.push_back(ctrl.theta_wG(j).squaredNorm());
+        for (int i = 0; i < kM; ++i) row.push_back(double(ctrl.theta_cG(i).squaredNorm()));
+        for (int j = 0; j < kN; ++j) row.push_back(double(ctrl.theta_wG(j).squaredNorm()));
         row.push_back(pinv_sigma_min);
         if (overlay) {
           const bool have = sample < overlay->principal_err.size();
@@ -519,7 +535,7 @@ class HybridScenario final : public Scenario {
     IntegratorChoice ic;  // rk4: one RK4 step per control period (spec §A.5); adams: CVODE 1e-10 / 1e-12
     ic.kind = c.integrator == "rk4" ? IntegratorChoice::Kind::rk4 : IntegratorChoice::Kind::adams;
     ic.rk4_step_s = T;
-    PassThrough<Controller::Output> actuation;
+    PassThrough<Output> actuation;
     closed_loop(sim, x, opt, ic, sensors, ctrl, to_actuation, actuation, to_plant, observe);
     if (csv) csv->close();
 

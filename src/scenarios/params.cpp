@@ -523,8 +523,7 @@ void ParamSet::set(const std::string& key, const std::string& text) {
 }
 
 void declare_scalar(ParamSet& p) {
-  p.name("scalar", "double", {"double", "float"},
-         "scalar of the flight components (law, allocation); the plant integrates in double");
+  p.name("scalar", "double", {"double", "float"}, kScalarHelp);
 }
 
 }  // namespace adcs::sim

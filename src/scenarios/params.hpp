@@ -150,7 +150,10 @@ class ParamSet {
 };
 
 //! Declares `scalar` (double | float, issue 19): the scalar the flight components of a scenario
-//! run in; the plant stays double under CVODE. Every paper scenario declares it.
+//! run in; the plant stays double under CVODE. Scenarios whose parameters are a bound struct
+//! (param_binding.hpp) declare the same name with kScalarHelp.
 void declare_scalar(ParamSet& p);
+inline constexpr const char* kScalarHelp =
+    "scalar of the flight components (law, steering, allocation); the plant integrates in double";
 
 }  // namespace adcs::sim

@@ -1,19 +1,35 @@
-// Cortex-M4F float check (issue 19): the float instances of the attitude chain compiled for a
+// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seed 001 compiled for a
 // single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard) with
 // -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py then walks the call
 // graph of this object from the adcs_m4f_* entry points and fails if any software-double helper
 // (__aeabi_d*, __aeabi_*2d) or double libm function (sin, cos, sqrt, atan, ...) is reachable: on
 // this FPU a single double operation is a ~60-cycle library call.
 #include "adcs/actuator/rw_allocation.hpp"
+#include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
 
 namespace adcs {
 template class MrpPd<4, float>;
 template class RwTorqueAllocator<4, float>;
+// Seed 001: the run-time members only. Its constructor runs the design in double on purpose
+// (pole placement, Lyapunov solve: software double once at start-up); compiled to code here it
+// cost ~70 arm-none-eabi-g++ CPU-s. The whole class, constructor included, is compiled with
+// -Wdouble-promotion -Wfloat-conversion -Werror by clang -fsyntax-only (ADCS_M4F_WHOLE_CLASS,
+// cmake/TargetCheck.cmake).
+#ifdef ADCS_M4F_WHOLE_CLASS
+template class HybridAdaptive<4, 3, float>;
+#else
+template Status HybridAdaptive<4, 3, float>::step(const Input&, Output&, Diagnostics*) noexcept;
+template Status HybridAdaptive<4, 3, float>::set_available(ActuatorMask) noexcept;
+template Status HybridAdaptive<4, 3, float>::set_estimates(const Vec<3, float>&, const Mat<6, 4, float>&,
+                                                           const Mat<3, 3, float>&) noexcept;
+template void HybridAdaptive<4, 3, float>::reset() noexcept;
+#endif
 }  // namespace adcs
 
 using PdF = adcs::MrpPd<4, float>;
 using AllocF = adcs::RwTorqueAllocator<4, float>;
+using HybridF = adcs::HybridAdaptive<4, 3, float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
 extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
@@ -21,4 +37,7 @@ extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* o
 }
 extern "C" int adcs_m4f_rw_allocation_step(const AllocF* a, const AllocF::Input* in, AllocF::Output* out) {
   return static_cast<int>(a->step(*in, *out));
+}
+extern "C" int adcs_m4f_hybrid_adaptive_step(HybridF* c, const HybridF::Input* in, HybridF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
 }

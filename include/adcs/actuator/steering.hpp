@@ -30,13 +30,16 @@ enum class SteeringMode : std::uint8_t {
 
 //! What one steering call saw and delivered. The torque error is the fraction of the request the
 //! command misses: e = ‖X u − v‖ / ‖v‖ (0 for v = 0), so 1 means "nothing of v is delivered".
-struct SteeringInfo {
-  PinvInfo pinv;                                //!< singular values, condition, damping used
+//! S: the scalar of X (issue 19); steer_escape is double only.
+template <class S = double>
+struct SteeringInfoT {
+  PinvInfoT<S> pinv;                            //!< singular values, condition, damping used
   SteeringMode mode = SteeringMode::pseudo_inverse;
-  double singularity_measure = 0.0;  //!< [-] m = √det(X̄ X̄ᵀ), X̄ = X / (largest column norm of X); 0 when singular
-  double torque_error = 0.0;         //!< [-] ‖X u − v‖ / ‖v‖ of the command written
-  double regularization = 0.0;       //!< [-] λ of steer_escape (on X̄ X̄ᵀ); pinv.damping for steer()
+  S singularity_measure = S(0);  //!< [-] m = √det(X̄ X̄ᵀ), X̄ = X / (largest column norm of X); 0 when singular
+  S torque_error = S(0);         //!< [-] ‖X u − v‖ / ‖v‖ of the command written
+  S regularization = S(0);       //!< [-] λ of steer_escape (on X̄ X̄ᵀ); pinv.damping for steer()
 };
+using SteeringInfo = SteeringInfoT<double>;
 
 //! Smallest λ0 steer_escape accepts (on X̄X̄ᵀ, whose eigenvalues are O(1)). At a singular X̄,
 //! λ = λ0 is all that keeps X̄X̄ᵀ + λE invertible; with λ0 ≥ 1e-8 and ε0 < 0.5 its smallest
@@ -53,43 +56,50 @@ inline constexpr double kSteeringOkTorqueError = 1e-3;
 //! σ_min(X) ≈ 0.017 (spec §A.6 R9); the default 1e-3 leaves the paper's run on the exact inverse.
 //! For a cluster of another size scale the thresholds with it, or use steer_escape, whose
 //! thresholds are relative to the cluster's own scale.
-struct SteeringParams {
-  double sigma_threshold = 1e-3;  //!< [X's units] σ_min below which damping starts
-  double lambda_max = 1e-2;       //!< [X's units] damping at σ_min = 0 (λ, not squared)
-  double max_torque_error = 0.1;  //!< [-] bound on ‖Xu − v‖/‖v‖ of a usable command, in (0, 1]
+template <class S = double>
+struct SteeringParamsT {
+  S sigma_threshold = S(1e-3);  //!< [X's units] σ_min below which damping starts
+  S lambda_max = S(1e-2);       //!< [X's units] damping at σ_min = 0 (λ, not squared)
+  S max_torque_error = S(0.1);  //!< [-] bound on ‖Xu − v‖/‖v‖ of a usable command, in (0, 1]
+  template <class T>
+  SteeringParamsT<T> cast() const noexcept {
+    return {narrow_scalar<T>(sigma_threshold), narrow_scalar<T>(lambda_max), narrow_scalar<T>(max_torque_error)};
+  }
 };
+using SteeringParams = SteeringParamsT<double>;
 
 //! True when the steering parameters are finite and in range (thresholds ≥ 0, bound in (0, 1]).
-inline bool valid(const SteeringParams& p) noexcept {
-  return std::isfinite(p.sigma_threshold) && p.sigma_threshold >= 0.0 && std::isfinite(p.lambda_max) &&
-         p.lambda_max >= 0.0 && p.max_torque_error > 0.0 && p.max_torque_error <= 1.0;
+template <class S>
+inline bool valid(const SteeringParamsT<S>& p) noexcept {
+  return std::isfinite(p.sigma_threshold) && p.sigma_threshold >= S(0) && std::isfinite(p.lambda_max) &&
+         p.lambda_max >= S(0) && p.max_torque_error > S(0) && p.max_torque_error <= S(1);
 }
 
 namespace detail {
 //! The singularity measure of X on its own scale: m = √det(X̄ X̄ᵀ), X̄ = X / max_k ‖x_k‖ (for a
 //! CMG cluster, X̄'s columns are the unit torque axes of the largest rotors). 0 when X = 0.
 //! Also returns the scale and X̄ X̄ᵀ for steer_escape.
-template <int L>
-double singularity_measure(const Mat<3, L>& X, double& scale, Mat3& G) noexcept {
+template <int L, class S>
+S singularity_measure(const Mat<3, L, S>& X, S& scale, Mat<3, 3, S>& G) noexcept {
   scale = X.colwise().norm().maxCoeff();
-  if (!(scale > 0.0)) {
+  if (!(scale > S(0))) {
     G.setZero();
-    return 0.0;
+    return S(0);
   }
-  const Mat<3, L> Xn = X / scale;
+  const Mat<3, L, S> Xn = X / scale;
   G.noalias() = Xn * Xn.transpose();
-  return std::sqrt(std::max(G.determinant(), 0.0));
+  return std::sqrt(std::max(G.determinant(), S(0)));
 }
 
 //! Fills the torque error of u and grades a command that was written: `within` (ok or the given
 //! regularised status) while e ≤ bound, request_not_met beyond it. The caller fills the
 //! singularity measure (steer_escape has it already).
-template <int L>
-Status grade_command(const Mat<3, L>& X, const Vec3& v, const Vec<L>& u, double bound, Status within,
-                     SteeringInfo& info) noexcept {
-  const double v_norm = v.norm();
-  const Vec3 r = X * u - v;
-  info.torque_error = v_norm > 0.0 ? r.norm() / v_norm : (u.isZero(0.0) ? 0.0 : 1.0);
+template <int L, class S>
+Status grade_command(const Mat<3, L, S>& X, const Vec<3, S>& v, const Vec<L, S>& u, S bound, Status within,
+                     SteeringInfoT<S>& info) noexcept {
+  const S v_norm = v.norm();
+  const Vec<3, S> r = X * u - v;
+  info.torque_error = v_norm > S(0) ? r.norm() / v_norm : (u.isZero(S(0)) ? S(0) : S(1));
   if (!(info.torque_error <= bound)) return Status::request_not_met;  // NaN included
   return within;
 }
@@ -106,21 +116,23 @@ Status grade_command(const Mat<3, L>& X, const Vec3& v, const Vec<L>& u, double 
 //!    the law that leaves such a configuration;
 //!  - invalid_parameter, non_finite_input, singular or out_of_range (finite inputs whose solution
 //!    overflows) with u untouched.
-template <int L>
-[[nodiscard]] Status steer(const Mat<3, L>& X, const Vec3& v, const SteeringParams& params,
-                           Vec<L>& u, SteeringInfo* info = nullptr) noexcept {
+//! S is not deduced (X may be any Eigen expression): double unless given, `steer<L, float>(...)`.
+template <int L, class S = double>
+[[nodiscard]] Status steer(const identity_t<Mat<3, L, S>>& X, const identity_t<Vec<3, S>>& v,
+                           const identity_t<SteeringParamsT<S>>& params, Vec<L, S>& u,
+                           identity_t<SteeringInfoT<S>>* info = nullptr) noexcept {
   if (!valid(params)) return Status::invalid_parameter;
-  SteeringInfo local;
-  Vec<L> candidate;
-  Status s = damped_right_pinv_solve<3, L>(X, v, candidate, DampingParams{params.sigma_threshold, params.lambda_max},
-                                           &local.pinv);
+  SteeringInfoT<S> local;
+  Vec<L, S> candidate;
+  Status s = damped_right_pinv_solve<3, L, S>(X, v, candidate,
+                                              DampingParamsT<S>{params.sigma_threshold, params.lambda_max}, &local.pinv);
   local.mode = local.pinv.damped ? SteeringMode::singularity_robust : SteeringMode::pseudo_inverse;
   local.regularization = local.pinv.damping;
   if (usable(s)) {
-    double scale = 0.0;
-    Mat3 G;
-    local.singularity_measure = detail::singularity_measure<L>(X, scale, G);
-    s = detail::grade_command<L>(X, v, candidate, params.max_torque_error, s, local);
+    S scale = S(0);
+    Mat<3, 3, S> G;
+    local.singularity_measure = detail::singularity_measure<L, S>(X, scale, G);
+    s = detail::grade_command<L, S>(X, v, candidate, params.max_torque_error, s, local);
     u = candidate;
   }
   if (info) *info = local;
@@ -179,7 +191,7 @@ template <int L>
   local.mode = SteeringMode::singularity_escape;
   double scale = 0.0;
   Mat3 G;
-  const double m = detail::singularity_measure<L>(X, scale, G);
+  const double m = detail::singularity_measure<L, double>(X, scale, G);
   Vec<L> candidate = Vec<L>::Zero();
   if (scale > 0.0) {
     const double lambda = params.lambda0 * std::exp(-params.mu * m * m);  // λ = λ0 exp(−μ det)
@@ -198,7 +210,8 @@ template <int L>
     local.regularization = lambda;
   }
   local.singularity_measure = m;
-  const Status s = detail::grade_command<L>(X, v, candidate, params.max_torque_error, Status::ill_conditioned, local);
+  const Status s =
+      detail::grade_command<L, double>(X, v, candidate, params.max_torque_error, Status::ill_conditioned, local);
   const Status graded = (s == Status::ill_conditioned && local.torque_error <= kSteeringOkTorqueError) ? Status::ok : s;
   u = candidate;
   if (info) *info = local;
@@ -222,19 +235,20 @@ constexpr ActuatorMask all_actuators() noexcept {
 //! request_not_met when what is left cannot deliver v within max_torque_error).
 //! out_of_range (u untouched) when the mask names an actuator beyond L. The columns of
 //! unavailable actuators are not read (a failed actuator's model may be garbage, NaN included).
-template <int L>
-[[nodiscard]] Status steer_available(const Mat<3, L>& X, const Vec3& v, const SteeringParams& params,
-                                     ActuatorMask available, Vec<L>& u, SteeringInfo* info = nullptr) noexcept {
+template <int L, class S = double>
+[[nodiscard]] Status steer_available(const identity_t<Mat<3, L, S>>& X, const identity_t<Vec<3, S>>& v,
+                                     const identity_t<SteeringParamsT<S>>& params, ActuatorMask available,
+                                     Vec<L, S>& u, identity_t<SteeringInfoT<S>>* info = nullptr) noexcept {
   if ((available & ~all_actuators<L>()) != 0u) return Status::out_of_range;
-  if (available == all_actuators<L>()) return steer<L>(X, v, params, u, info);
-  Mat<3, L> X_a = X;
+  if (available == all_actuators<L>()) return steer<L, S>(X, v, params, u, info);
+  Mat<3, L, S> X_a = X;
   for (int k = 0; k < L; ++k)
     if (((available >> k) & 1u) == 0u) X_a.col(k).setZero();
-  Vec<L> u_a;
-  const Status s = steer<L>(X_a, v, params, u_a, info);
+  Vec<L, S> u_a;
+  const Status s = steer<L, S>(X_a, v, params, u_a, info);
   if (!written(s)) return s;
   for (int k = 0; k < L; ++k)  // exact zeros, whatever the rounding of X_aᵀ y
-    if (((available >> k) & 1u) == 0u) u_a(k) = 0.0;
+    if (((available >> k) & 1u) == 0u) u_a(k) = S(0);
   u = u_a;
   return s;
 }

@@ -15,6 +15,8 @@
 // so the projection's direction logic (Proj(θ, cΦ) = c Proj(θ, Φ) for c > 0) is unchanged.
 #include <cmath>
 
+#include "adcs/core/types.hpp"
+
 namespace adcs {
 
 //! How a controller integrates its adaptive estimates over one control period.
@@ -25,10 +27,12 @@ enum class AdaptationStep {
 
 //! 1/(1 + λ/λ_max) for a per-step loop gain λ >= 0 and a limit λ_max > 0; 1 for a non-finite
 //! or negative λ_max (callers validate parameters; this never divides by zero).
-inline double normalized_step_scale(double step_gain, double max_step_gain) noexcept {
-  if (!(max_step_gain > 0.0) || !std::isfinite(max_step_gain)) return 1.0;
-  if (!(step_gain > 0.0)) return 1.0;
-  return 1.0 / (1.0 + step_gain / max_step_gain);  // step_gain = +inf gives 0: the step freezes
+//! S: the scalar of the law (issue 19).
+template <class S>
+inline S normalized_step_scale(S step_gain, identity_t<S> max_step_gain) noexcept {
+  if (!(max_step_gain > S(0)) || !std::isfinite(max_step_gain)) return S(1);
+  if (!(step_gain > S(0))) return S(1);
+  return S(1) / (S(1) + step_gain / max_step_gain);  // step_gain = +inf gives 0: the step freezes
 }
 
 }  // namespace adcs

@@ -9,6 +9,9 @@
 // construction; step() is the per-sample arithmetic, estimates integrated by explicit Euler at
 // the control period (spec §A.3 step 13) with the discrete radial safeguard (counted).
 // α_F = α_G = 0 gives the non-adaptive baseline.
+// Scalar (issue 19): HybridAdaptive<M, N, S>. The design (K by pole placement, P from the
+// Lyapunov equation, J_n⁻¹) is computed once in double from the parameters and rounded to S once;
+// step() runs entirely in S.
 #include <array>
 #include <cstdint>
 
@@ -42,71 +45,106 @@ inline AxisPoles<3> seed001_axis_poles() noexcept {
 //! Defaults: seed 001 §4 (poles, Q_L, α, β, δ), spec §A.3/§A.5 (H_I^n = 0, T_c = 1 ms), ours
 //! (max_step_gain, docs/DECISIONS.md). The nominal geometry has no default (VscmgGeometry is NaN
 //! until set, e.g. pyramid_4cmg_3rw_nominal()): a default set is refused.
-template <int M, int N>
+template <int M, int N, class S = double>
 struct HybridAdaptiveParams {
-  VscmgGeometry<M, N> nominal;             //!< nominal geometry: all the controller knows (no default)
-  AxisPoles<3> poles = seed001_axis_poles();  //!< eig(A_1), one pair per axis (seed 001 §4)
-  Mat6 Q_L = Mat6::Identity();             //!< [-] Lyapunov weight (seed 001 §4: Q = I_6)
-  double alpha_F = 1.0e7;                  //!< [-] momentum adaptation gain (seed 001 §4)
-  double alpha_G = 1.0e3;                  //!< [-] deviation adaptation gain (seed 001 §4)
-  double beta_G = 0.05;                    //!< [-] projection radius² β_Gi (seed 001 §4)
-  double delta_G = 0.1;                    //!< [-] projection boundary layer δ_Gi (seed 001 §4)
-  Vec3 H_I_n = Vec3::Zero();               //!< [N m s] nominal inertial momentum H_I^n (§A.3)
-  double period_s = 1.0e-3;                //!< [s] T_c (spec §A.5: ≥ 5 ms is unstable)
-  SteeringParams steering{};               //!< singularity-robust fallback threshold/damping
+  VscmgGeometry<M, N, S> nominal;          //!< nominal geometry: all the controller knows (no default)
+  AxisPoles<3> poles = seed001_axis_poles();  //!< eig(A_1), one pair per axis (seed 001 §4); design, double
+  Mat<6, 6, S> Q_L = Mat<6, 6, S>::Identity();  //!< [-] Lyapunov weight (seed 001 §4: Q = I_6)
+  S alpha_F = S(1.0e7);                    //!< [-] momentum adaptation gain (seed 001 §4)
+  S alpha_G = S(1.0e3);                    //!< [-] deviation adaptation gain (seed 001 §4)
+  S beta_G = S(0.05);                      //!< [-] projection radius² β_Gi (seed 001 §4)
+  S delta_G = S(0.1);                      //!< [-] projection boundary layer δ_Gi (seed 001 §4)
+  Vec<3, S> H_I_n = Vec<3, S>::Zero();     //!< [N m s] nominal inertial momentum H_I^n (§A.3)
+  S period_s = S(1.0e-3);                  //!< [s] T_c (spec §A.5: ≥ 5 ms is unstable)
+  SteeringParamsT<S> steering{};           //!< singularity-robust fallback threshold/damping
   //! After a failed step: zero gimbal rates and wheel accelerations (safe_command), or hold.
   FailurePolicy on_failure = FailurePolicy::safe_command;
   //! Estimate integration over T_c. explicit_euler is the paper's (spec §A.3 step 13, stable for
   //! T_c ≤ 3 ms on A-REF); normalized keeps the per-step loop gain below max_step_gain so the
   //! adaptation stays stable at flight rates (5-20 Hz); see adapt/normalized_step.hpp.
   AdaptationStep adaptation_step = AdaptationStep::explicit_euler;
-  double max_step_gain = 0.2;              //!< [-] λ_max of the normalized step (ours; 0.2 keeps
+  S max_step_gain = S(0.2);                //!< [-] λ_max of the normalized step (ours; 0.2 keeps
                                            //!< A-REF accuracy from 1 ms to 200 ms, docs/DECISIONS.md)
+  //! The same parameters in another scalar (each value rounded once; validated by the controller).
+  template <class T>
+  HybridAdaptiveParams<M, N, T> cast() const noexcept {
+    HybridAdaptiveParams<M, N, T> q;
+    q.nominal = nominal.template cast<T>();
+    q.poles = poles;
+    q.Q_L = scalar_cast<T>(Q_L);
+    q.alpha_F = narrow_scalar<T>(alpha_F);
+    q.alpha_G = narrow_scalar<T>(alpha_G);
+    q.beta_G = narrow_scalar<T>(beta_G);
+    q.delta_G = narrow_scalar<T>(delta_G);
+    q.H_I_n = scalar_cast<T>(H_I_n);
+    q.period_s = narrow_scalar<T>(period_s);
+    q.steering = steering.template cast<T>();
+    q.on_failure = on_failure;
+    q.adaptation_step = adaptation_step;
+    q.max_step_gain = narrow_scalar<T>(max_step_gain);
+    return q;
+  }
 };
 
-template <int M, int N>
+template <int M, int N, class S = double>
 struct HybridAdaptiveInput {
-  AttitudeState state{};             //!< σ_BN (not shadow-switched, spec §A.2.4), ω_BN_B
-  VscmgState<M, N> actuators{};      //!< gimbal angles; wheel speeds (not used by the law; checked)
-  MrpReferenceSample reference{};    //!< σ_d, σ̇_d, σ̈_d
+  AttitudeStateT<S> state{};          //!< σ_BN (not shadow-switched, spec §A.2.4), ω_BN_B
+  VscmgState<M, N, S> actuators{};    //!< gimbal angles; wheel speeds (not used by the law; checked)
+  MrpReferenceSampleT<S> reference{};  //!< σ_d, σ̇_d, σ̈_d
+  template <class T>
+  HybridAdaptiveInput<M, N, T> cast() const noexcept {
+    return {state.template cast<T>(), actuators.template cast<T>(), reference.template cast<T>()};
+  }
 };
 
 //! Optional per-step diagnostics (caller-owned; costs nothing when not requested).
-template <int M, int N>
+template <int M, int N, class S = double>
 struct HybridAdaptiveDiagnostics {
-  Vec6 e = Vec6::Zero();                     //!< [-, 1/s] tracking error [σ − σ_d; σ̇ − σ̇_d]
-  Mat<3, M + N> X = Mat<3, M + N>::Zero();   //!< steering matrix G*n + Y_G Θ̂_G
-  SteeringInfo steering{};                   //!< σ_min(X), mode used
-  int projection_active_blocks = 0;          //!< blocks whose projection correction acted
-  double theta_F_step_scale = 1.0;           //!< [-] normalized-step scale applied to Θ̂_F (1 = none)
+  Vec<6, S> e = Vec<6, S>::Zero();                 //!< [-, 1/s] tracking error [σ − σ_d; σ̇ − σ̇_d]
+  Mat<3, M + N, S> X = Mat<3, M + N, S>::Zero();   //!< steering matrix G*n + Y_G Θ̂_G
+  SteeringInfoT<S> steering{};                     //!< σ_min(X), mode used
+  int projection_active_blocks = 0;                //!< blocks whose projection correction acted
+  S theta_F_step_scale = S(1);                     //!< [-] normalized-step scale applied to Θ̂_F (1 = none)
 };
 
-template <int M, int N>
+template <int M, int N, class S = double>
 class HybridAdaptive {
  public:
   static constexpr int L = M + N;
-  using Params = HybridAdaptiveParams<M, N>;
-  using Input = HybridAdaptiveInput<M, N>;
-  using Output = VscmgRates<M, N>;
-  using Diagnostics = HybridAdaptiveDiagnostics<M, N>;
+  using Scalar = S;
+  using Params = HybridAdaptiveParams<M, N, S>;
+  using Input = HybridAdaptiveInput<M, N, S>;
+  using Output = VscmgRates<M, N, S>;
+  using Diagnostics = HybridAdaptiveDiagnostics<M, N, S>;
+  using Vec3S = Vec<3, S>;
+  using Vec6S = Vec<6, S>;
+  using Mat3S = Mat<3, 3, S>;
 
   explicit HybridAdaptive(const Params& p) noexcept : p_(p) {
+    // The design in double (a no-op cast for S = double), rounded to S once at the end.
+    const HybridAdaptiveParams<M, N, double> pd = p_.template cast<double>();
+    Mat<3, 6> K;
+    Mat6 P;
     // Hurwitz poles: s² + k_d s + k_p has both roots in the open left half-plane iff k_p, k_d > 0.
-    bool ok = place_double_integrator<3>(p_.poles, K_) == Status::ok &&
-              (K_.template leftCols<3>().diagonal().array() > 0.0).all() &&
-              (K_.template rightCols<3>().diagonal().array() > 0.0).all();
+    bool ok = place_double_integrator<3>(pd.poles, K) == Status::ok &&
+              (K.template leftCols<3>().diagonal().array() > 0.0).all() &&
+              (K.template rightCols<3>().diagonal().array() > 0.0).all();
     // Q_L SPD with a Hurwitz A_1 makes P SPD (seed 001 §3: A_1ᵀP + PA_1 = −Q_L).
-    ok = ok && symmetric_positive_definite<6>(p_.Q_L) && valid(p_.nominal) &&
+    ok = ok && symmetric_positive_definite<6>(pd.Q_L) && valid(p_.nominal) && valid(pd.nominal) &&
          valid(p_.steering);
-    const Mat6 A1 = double_integrator_closed_loop<3>(K_);
-    ok = ok && solve_continuous_lyapunov<6>(A1, p_.Q_L, P_) == Status::ok;
-    B0tP_ = P_.template bottomRows<3>();  // B0ᵀP with B0 = [0; I3]
-    P22_norm_ = P_.template bottomRightCorner<3, 3>().norm();  // ‖P22‖_F for the step gain
-    J_n_ = p_.nominal.J_tr(Vec<M>::Zero());  // spec §A.3: J_n = J_tr(0), nominal geometry
-    const Eigen::LLT<Mat3> llt(J_n_);
+    const Mat6 A1 = double_integrator_closed_loop<3>(K);
+    ok = ok && solve_continuous_lyapunov<6>(A1, pd.Q_L, P) == Status::ok;
+    const Mat3 J_n = pd.nominal.J_tr(Vec<M>::Zero());  // spec §A.3: J_n = J_tr(0), nominal geometry
+    const Eigen::LLT<Mat3> llt(J_n);
     ok = ok && llt.info() == Eigen::Success;
-    J_n_inv_ = llt.solve(Mat3::Identity());
-    proj_ = ProjectionParams{p_.alpha_G, p_.beta_G, p_.delta_G};
+    const Mat3 J_n_inv = llt.solve(Mat3::Identity());
+    K_ = scalar_cast<S>(K);
+    P_ = scalar_cast<S>(P);
+    B0tP_ = P_.template bottomRows<3>();  // B0ᵀP with B0 = [0; I3]
+    P22_norm_ = narrow_scalar<S>(P.template bottomRightCorner<3, 3>().norm());  // ‖P22‖_F for the step gain
+    J_n_ = scalar_cast<S>(J_n);
+    J_n_inv_ = scalar_cast<S>(J_n_inv);
+    proj_ = ProjectionParamsT<S>{p_.alpha_G, p_.beta_G, p_.delta_G};
     ok = ok && valid(proj_) && finite_nonnegative(p_.alpha_F) && finite_positive(p_.period_s) &&
          all_finite(p_.H_I_n) && all_finite(J_n_inv_) && finite_positive(p_.max_step_gain);
     status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles, Q_L, nominal geometry, "
@@ -123,7 +161,7 @@ class HybridAdaptive {
   //! β_G <= 0, δ_G <= 0, T_c <= 0, λ_max <= 0 or any of them or H_I_n not finite. A refused law
   //! answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return p_.period_s; }
+  S period_s() const noexcept { return p_.period_s; }
 
   //! Estimates to their initial values Θ̂(0) = 0 (spec §A.5), counters and command to zero.
   void reset() noexcept {
@@ -144,9 +182,9 @@ class HybridAdaptive {
     if ((mask & ~all_actuators<L>()) != 0u) return Status::out_of_range;
     available_ = mask;
     for (int k = 0; k < M; ++k)
-      if (((mask >> k) & 1u) == 0u) last_.gamma_dot_rad_s(k) = 0.0;
+      if (((mask >> k) & 1u) == 0u) last_.gamma_dot_rad_s(k) = S(0);
     for (int k = 0; k < N; ++k)
-      if (((mask >> (M + k)) & 1u) == 0u) last_.Omega_dot_rad_s2(k) = 0.0;
+      if (((mask >> (M + k)) & 1u) == 0u) last_.Omega_dot_rad_s2(k) = S(0);
     return Status::ok;
   }
   ActuatorMask available() const noexcept { return available_; }
@@ -160,42 +198,42 @@ class HybridAdaptive {
   [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
     out = failure_command(p_.on_failure, last_, Output{});
     if (status_ != Status::ok) return status_;
-    const MrpReferenceSample& r = in.reference;
+    const MrpReferenceSampleT<S>& r = in.reference;
     if (!all_finite(in.state.sigma_BN) || !all_finite(in.state.omega_BN_B) || !all_finite(in.actuators.gamma_rad) ||
         !all_finite(in.actuators.Omega_rad_s) || !all_finite(r.sigma) || !all_finite(r.sigma_dot) ||
         !all_finite(r.sigma_ddot))
       return Status::non_finite_input;
 
-    const Vec3& sigma = in.state.sigma_BN;
-    const Vec3& w = in.state.omega_BN_B;
+    const Vec3S& sigma = in.state.sigma_BN;
+    const Vec3S& w = in.state.omega_BN_B;
     // Steps 1-3: kinematics and error.
-    const Mat3 G = mrp_G(sigma);
-    const Vec3 sigma_dot = G * w;                                   // seed 001 eq. (6)
-    Vec6 e;
+    const Mat3S G = mrp_G(sigma);
+    const Vec3S sigma_dot = G * w;                                   // seed 001 eq. (6)
+    Vec6S e;
     e << sigma - r.sigma, sigma_dot - r.sigma_dot;
-    const Vec3 PBe = B0tP_ * e;                                     // B0ᵀ P e
-    const Mat3 G_dot = mrp_G_dot(sigma, sigma_dot);
-    const Mat3 GJ = G * J_n_inv_;                                   // G J_n⁻¹ = H*⁻¹G⁻ᵀ
+    const Vec3S PBe = B0tP_ * e;                                     // B0ᵀ P e
+    const Mat3S G_dot = mrp_G_dot(sigma, sigma_dot);
+    const Mat3S GJ = G * J_n_inv_;                                   // G J_n⁻¹ = H*⁻¹G⁻ᵀ
     // Steps 4-5: drift and its momentum regressor.
-    const Mat3 Y_F = -GJ * skew(w) * mrp_to_dcm(sigma);             // seed 001 eq. (16)
-    const Vec3 F_n = G_dot * w + Y_F * p_.H_I_n;                    // seed 001 eq. (15)
+    const Mat3S Y_F = -GJ * skew(w) * mrp_to_dcm(sigma);             // seed 001 eq. (16)
+    const Vec3S F_n = G_dot * w + Y_F * p_.H_I_n;                    // seed 001 eq. (15)
     // Steps 6-8: X = G*n + Y_G Θ̂_G column by column (seed 001 eqs. (17)-(20)).
-    const Vec<M> cos_g = in.actuators.gamma_rad.array().cos(), sin_g = in.actuators.gamma_rad.array().sin();  // once per step
-    Mat<3, L> X;
+    const Vec<M, S> cos_g = in.actuators.gamma_rad.array().cos(), sin_g = in.actuators.gamma_rad.array().sin();  // once per step
+    Mat<3, L, S> X;
     for (int i = 0; i < M; ++i) {
-      const double c = cos_g(i), s = sin_g(i);
-      const Vec3 t_n = c * p_.nominal.A_ct0.col(i) - s * p_.nominal.A_cs0.col(i);   // seed 001 eq. (3)
-      const Vec3 dt = c * theta_c_.col(i).template head<3>() - s * theta_c_.col(i).template tail<3>();
+      const S c = cos_g(i), s = sin_g(i);
+      const Vec3S t_n = c * p_.nominal.A_ct0.col(i) - s * p_.nominal.A_cs0.col(i);   // seed 001 eq. (3)
+      const Vec3S dt = c * theta_c_.col(i).template head<3>() - s * theta_c_.col(i).template tail<3>();
       X.col(i) = -p_.nominal.h_cw(i) * (GJ * (t_n + dt));                            // seed 001 eq. (19)
     }
     for (int j = 0; j < N; ++j)
       X.col(M + j) = -p_.nominal.I_wws(j) * (GJ * (p_.nominal.A_ws.col(j) + theta_w_.col(j)));
     // Step 9: desired σ̈.
-    const Vec3 v = -K_ * e - F_n - Y_F * theta_F_ + r.sigma_ddot;   // seed 001 eq. (24)
+    const Vec3S v = -K_ * e - F_n - Y_F * theta_F_ + r.sigma_ddot;   // seed 001 eq. (24)
     // Step 10: right pseudo-inverse (LDLT of X Xᵀ), singularity-robust fallback.
-    Vec<L> u;
-    SteeringInfo sinfo;
-    const Status steer_status = steer_available<L>(X, v, p_.steering, available_, u, &sinfo);
+    Vec<L, S> u;
+    SteeringInfoT<S> sinfo;
+    const Status steer_status = steer_available<L, S>(X, v, p_.steering, available_, u, &sinfo);
     if (diag) {
       diag->e = e;
       diag->X = X;
@@ -207,39 +245,39 @@ class HybridAdaptive {
     // Steps 11-13: adaptation over T_c (explicit Euler, or its normalized step); commit only
     // if everything is finite. Per-step loop gains λ = T α ‖Y‖² ‖P22‖ (adapt/normalized_step.hpp):
     // ‖Y_F‖², and ‖Y_Gk u_k‖² = (h_cw,i or I_ws,j)² ‖GJ‖² u_k² since [c I3, −s I3] is orthonormal.
-    const double T = p_.period_s;
-    double scale_F = 1.0;
-    Vec<L> scale_u = Vec<L>::Ones();  // per-block scale of the Θ_G steps
+    const S T = p_.period_s;
+    S scale_F = S(1);
+    Vec<L, S> scale_u = Vec<L, S>::Ones();  // per-block scale of the Θ_G steps
     if (p_.adaptation_step == AdaptationStep::normalized) {
-      const double k = T * P22_norm_, GJ2 = GJ.squaredNorm(), lim = p_.max_step_gain;
+      const S k = T * P22_norm_, GJ2 = GJ.squaredNorm(), lim = p_.max_step_gain;
       scale_F = normalized_step_scale(k * p_.alpha_F * Y_F.squaredNorm(), lim);
       for (int i = 0; i < M; ++i) {
-        const double hu = p_.nominal.h_cw(i) * u(i);
+        const S hu = p_.nominal.h_cw(i) * u(i);
         scale_u(i) = normalized_step_scale(k * p_.alpha_G * GJ2 * hu * hu, lim);
       }
       for (int j = 0; j < N; ++j) {
-        const double Iu = p_.nominal.I_wws(j) * u(M + j);
+        const S Iu = p_.nominal.I_wws(j) * u(M + j);
         scale_u(M + j) = normalized_step_scale(k * p_.alpha_G * GJ2 * Iu * Iu, lim);
       }
     }
-    const Vec3 theta_F_next = theta_F_ + (T * p_.alpha_F * scale_F) * (Y_F.transpose() * PBe);  // seed 001 eq. (25)
-    Mat<6, M> theta_c_next;
-    Mat<3, N> theta_w_next;
+    const Vec3S theta_F_next = theta_F_ + (T * p_.alpha_F * scale_F) * (Y_F.transpose() * PBe);  // seed 001 eq. (25)
+    Mat<6, M, S> theta_c_next;
+    Mat<3, N, S> theta_w_next;
     int active_blocks = 0;
     bool safeguard = false;
-    const Vec3 GJtPBe = GJ.transpose() * PBe;
+    const Vec3S GJtPBe = GJ.transpose() * PBe;
     for (int i = 0; i < M; ++i) {
-      const double h = p_.nominal.h_cw(i);
-      Vec6 Phi;  // Y_cGiᵀ PBe u_i, Y_cGi = −h_cw,i GJ [c I3, −s I3]        seed 001 eqs. (19), (26)
+      const S h = p_.nominal.h_cw(i);
+      Vec6S Phi;  // Y_cGiᵀ PBe u_i, Y_cGi = −h_cw,i GJ [c I3, −s I3]        seed 001 eqs. (19), (26)
       Phi << -h * cos_g(i) * GJtPBe, h * sin_g(i) * GJtPBe;
-      Vec6 next;
+      Vec6S next;
       if (!update_block<6>(theta_c_.col(i), Phi * (u(i) * scale_u(i)), next, active_blocks, safeguard))
         return Status::out_of_range;
       theta_c_next.col(i) = next;
     }
     for (int j = 0; j < N; ++j) {
-      const Vec3 Phi = (-p_.nominal.I_wws(j) * u(M + j) * scale_u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, seed 001 eq. (20)
-      Vec3 next;
+      const Vec3S Phi = (-p_.nominal.I_wws(j) * u(M + j) * scale_u(M + j)) * GJtPBe;  // Y_wGjᵀ PBe u, seed 001 eq. (20)
+      Vec3S next;
       if (!update_block<3>(theta_w_.col(j), Phi, next, active_blocks, safeguard))
         return Status::out_of_range;
       theta_w_next.col(j) = next;
@@ -262,22 +300,22 @@ class HybridAdaptive {
   }
 
   // --- estimates and constants (read-only) ---
-  const Vec3& theta_F() const noexcept { return theta_F_; }      //!< [N m s] Θ̂_F = Ĥ_I^Δ
-  Vec6 theta_cG(int i) const noexcept { return theta_c_.col(i); }  //!< [-] [Δt̂_i0; Δŝ_i0]
-  Vec3 theta_wG(int j) const noexcept { return theta_w_.col(j); }  //!< [-] Δŝ_wj
+  const Vec3S& theta_F() const noexcept { return theta_F_; }      //!< [N m s] Θ̂_F = Ĥ_I^Δ
+  Vec6S theta_cG(int i) const noexcept { return theta_c_.col(i); }  //!< [-] [Δt̂_i0; Δŝ_i0]
+  Vec3S theta_wG(int j) const noexcept { return theta_w_.col(j); }  //!< [-] Δŝ_wj
   std::uint32_t safeguard_count() const noexcept { return safeguard_count_; }
-  const Mat<3, 6>& K() const noexcept { return K_; }
-  const Mat6& P() const noexcept { return P_; }
-  const Mat3& J_n() const noexcept { return J_n_; }
+  const Mat<3, 6, S>& K() const noexcept { return K_; }
+  const Mat<6, 6, S>& P() const noexcept { return P_; }
+  const Mat3S& J_n() const noexcept { return J_n_; }
   const Params& params() const noexcept { return p_; }
 
   //! Sets the estimates (oracle tests with the true Θ, warm starts). Rejects non-finite values
   //! and blocks outside the invariant ball ‖Θ̂_Gk‖² ≤ β + δ, leaving the estimates untouched.
-  [[nodiscard]] Status set_estimates(const Vec3& theta_F, const Mat<6, M>& theta_c,
-                                     const Mat<3, N>& theta_w) noexcept {
+  [[nodiscard]] Status set_estimates(const Vec3S& theta_F, const Mat<6, M, S>& theta_c,
+                                     const Mat<3, N, S>& theta_w) noexcept {
     if (!all_finite(theta_F) || !all_finite(theta_c) || !all_finite(theta_w))
       return Status::non_finite_input;
-    const double bound = p_.beta_G + p_.delta_G;
+    const S bound = p_.beta_G + p_.delta_G;
     if ((theta_c.colwise().squaredNorm().array() > bound).any() ||
         (theta_w.colwise().squaredNorm().array() > bound).any())
       return Status::out_of_range;
@@ -291,35 +329,36 @@ class HybridAdaptive {
   //! One Θ_G block over a control period: θ⁺ = θ + T Proj(θ, Φ) (seed 001 eq. (26), explicit Euler,
   //! spec §A.3 step 13), then the radial safeguard to β + δ. False on a projection failure.
   template <int K>
-  bool update_block(const Vec<K>& theta, const Vec<K>& Phi, Vec<K>& next, int& active_blocks,
+  bool update_block(const Vec<K, S>& theta, const Vec<K, S>& Phi, Vec<K, S>& next, int& active_blocks,
                     bool& safeguard) const noexcept {
-    Vec<K> rate;
+    Vec<K, S> rate;
     bool active = false;
-    if (smooth_projection<K>(theta, Phi, proj_, rate, &active) != Status::ok) return false;
+    if (smooth_projection<K, S>(theta, Phi, proj_, rate, &active) != Status::ok) return false;
     next = theta + p_.period_s * rate;
-    safeguard = radial_safeguard<K>(next, p_.beta_G + p_.delta_G) || safeguard;
+    safeguard = radial_safeguard<K, S>(next, p_.beta_G + p_.delta_G) || safeguard;
     active_blocks += active;
     return true;
   }
 
   Params p_;
-  Mat<3, 6> K_ = Mat<3, 6>::Zero();
-  Mat6 P_ = Mat6::Zero();
-  Mat<3, 6> B0tP_ = Mat<3, 6>::Zero();
-  double P22_norm_ = 0.0;
-  Mat3 J_n_ = Mat3::Identity();
-  Mat3 J_n_inv_ = Mat3::Identity();
-  ProjectionParams proj_{};
+  Mat<3, 6, S> K_ = Mat<3, 6, S>::Zero();
+  Mat<6, 6, S> P_ = Mat<6, 6, S>::Zero();
+  Mat<3, 6, S> B0tP_ = Mat<3, 6, S>::Zero();
+  S P22_norm_ = S(0);
+  Mat3S J_n_ = Mat3S::Identity();
+  Mat3S J_n_inv_ = Mat3S::Identity();
+  ProjectionParamsT<S> proj_{};
   Status status_ = Status::ok;
 
-  Vec3 theta_F_ = Vec3::Zero();
-  Mat<6, M> theta_c_ = Mat<6, M>::Zero();
-  Mat<3, N> theta_w_ = Mat<3, N>::Zero();
+  Vec3S theta_F_ = Vec3S::Zero();
+  Mat<6, M, S> theta_c_ = Mat<6, M, S>::Zero();
+  Mat<3, N, S> theta_w_ = Mat<3, N, S>::Zero();
   Output last_{};
   std::uint32_t safeguard_count_ = 0;
   ActuatorMask available_ = all_actuators<L>();
 };
 
 ADCS_ASSERT_COMPONENT(HybridAdaptive<4, 3>);
+ADCS_ASSERT_COMPONENT(HybridAdaptive<4, 3, float>);
 
 }  // namespace adcs

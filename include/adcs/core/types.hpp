@@ -78,7 +78,9 @@ using identity_t = typename identity<T>::type;
 //! NaN, so a controller fed the result refuses it as it refuses any non-finite input.
 template <class T, class S>
 constexpr T narrow_scalar(S v) noexcept {
-  if constexpr (std::numeric_limits<T>::max() >= std::numeric_limits<S>::max()) {
+  // Compared in long double: a float-double comparison would promote (-Wdouble-promotion).
+  if constexpr (static_cast<long double>(std::numeric_limits<T>::max()) >=
+                static_cast<long double>(std::numeric_limits<S>::max())) {
     return static_cast<T>(v);
   } else {
     if (v > static_cast<S>(std::numeric_limits<T>::max())) return std::numeric_limits<T>::infinity();

@@ -18,6 +18,8 @@
 //   J_tr(gamma)      total inertia, seed 001 eq. (2) specialised to the hybrid cluster
 // The axes are NOT required to be unit or orthogonal: installation deviations (Mode A, spec
 // A.2.3) are added elementwise without renormalisation, exactly as the paper parameterises them.
+#include <type_traits>
+
 #include <Eigen/Cholesky>
 
 #include "adcs/core/failure_hook.hpp"
@@ -35,42 +37,60 @@ namespace adcs {
 //! pyramid_4cmg_3rw_nominal), so a forgotten one is refused by every plant and controller that
 //! validates the geometry. The gimbal+rotor inertias I_cs, I_ct, I_cg default to 0: lumped into
 //! J_s, as the controller model of seed 001 eq. (5) has them.
-template <int M, int N>
+template <int M, int N, class S = double>
 struct VscmgGeometry {
   static_assert(M >= 1 && N >= 0, "VscmgGeometry: need M >= 1 CMGs and N >= 0 wheels (N = 0: a pure CMG cluster)");
-  Mat<3, M> A_cg = Mat<3, M>::Constant(kUnset);   //!< [-] gimbal axes g_i (columns), constant
-  Mat<3, M> A_cs0 = Mat<3, M>::Constant(kUnset);  //!< [-] rotor spin axes s_i0 at gamma_i = 0
-  Mat<3, M> A_ct0 = Mat<3, M>::Constant(kUnset);  //!< [-] transverse axes t_i0 at gamma_i = 0
-  Mat<3, N> A_ws = Mat<3, N>::Constant(kUnset);   //!< [-] wheel spin axes s_wj (columns)
-  Vec<M> I_cs = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about s_i (0: in J_s)
-  Vec<M> I_ct = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about t_i (0: in J_s)
-  Vec<M> I_cg = Vec<M>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about g_i (0: in J_s)
-  Vec<M> h_cw = Vec<M>::Constant(kUnset);  //!< [N m s] CMG rotor momentum h_cw,i = I_cws,i Omega_c,i
-  Vec<N> I_wws = Vec<N>::Constant(kUnset);  //!< [kg m^2] wheel spin inertias
-  Mat3 J_s = Mat3::Constant(kUnset);    //!< [kg m^2] body inertia (see header comment), SPD
+  using Mat3S = Mat<3, 3, S>;
+  Mat<3, M, S> A_cg = Mat<3, M, S>::Constant(unset_v<S>);   //!< [-] gimbal axes g_i (columns), constant
+  Mat<3, M, S> A_cs0 = Mat<3, M, S>::Constant(unset_v<S>);  //!< [-] rotor spin axes s_i0 at gamma_i = 0
+  Mat<3, M, S> A_ct0 = Mat<3, M, S>::Constant(unset_v<S>);  //!< [-] transverse axes t_i0 at gamma_i = 0
+  Mat<3, N, S> A_ws = Mat<3, N, S>::Constant(unset_v<S>);   //!< [-] wheel spin axes s_wj (columns)
+  Vec<M, S> I_cs = Vec<M, S>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about s_i (0: in J_s)
+  Vec<M, S> I_ct = Vec<M, S>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about t_i (0: in J_s)
+  Vec<M, S> I_cg = Vec<M, S>::Zero();         //!< [kg m^2] CMG gimbal+rotor inertia about g_i (0: in J_s)
+  Vec<M, S> h_cw = Vec<M, S>::Constant(unset_v<S>);  //!< [N m s] CMG rotor momentum h_cw,i = I_cws,i Omega_c,i
+  Vec<N, S> I_wws = Vec<N, S>::Constant(unset_v<S>);  //!< [kg m^2] wheel spin inertias
+  Mat3S J_s = Mat3S::Constant(unset_v<S>);    //!< [kg m^2] body inertia (see header comment), SPD
+
+  //! The same geometry in another scalar (each value rounded once, issue 19).
+  template <class T>
+  VscmgGeometry<M, N, T> cast() const noexcept {
+    VscmgGeometry<M, N, T> g;
+    g.A_cg = scalar_cast<T>(A_cg);
+    g.A_cs0 = scalar_cast<T>(A_cs0);
+    g.A_ct0 = scalar_cast<T>(A_ct0);
+    g.A_ws = scalar_cast<T>(A_ws);
+    g.I_cs = scalar_cast<T>(I_cs);
+    g.I_ct = scalar_cast<T>(I_ct);
+    g.I_cg = scalar_cast<T>(I_cg);
+    g.h_cw = scalar_cast<T>(h_cw);
+    g.I_wws = scalar_cast<T>(I_wws);
+    g.J_s = scalar_cast<T>(J_s);
+    return g;
+  }
 
   //! A_cs(gamma) = A_cs0 diag(cos gamma) + A_ct0 diag(sin gamma).   seed 001 eq. (3)
-  Mat<3, M> A_cs(const Vec<M>& gamma) const noexcept {
-    Mat<3, M> A;
+  Mat<3, M, S> A_cs(const Vec<M, S>& gamma) const noexcept {
+    Mat<3, M, S> A;
     for (int i = 0; i < M; ++i)
       A.col(i) = std::cos(gamma(i)) * A_cs0.col(i) + std::sin(gamma(i)) * A_ct0.col(i);
     return A;
   }
   //! A_ct(gamma) = A_ct0 diag(cos gamma) - A_cs0 diag(sin gamma).   seed 001 eq. (3)
-  Mat<3, M> A_ct(const Vec<M>& gamma) const noexcept {
-    Mat<3, M> A;
+  Mat<3, M, S> A_ct(const Vec<M, S>& gamma) const noexcept {
+    Mat<3, M, S> A;
     for (int i = 0; i < M; ++i)
       A.col(i) = std::cos(gamma(i)) * A_ct0.col(i) - std::sin(gamma(i)) * A_cs0.col(i);
     return A;
   }
   //! J_tr(gamma) = J_s + sum_i [I_cs s s^T + I_ct t t^T + I_cg g g^T]_i + sum_j I_wws s_w s_w^T
   //! [kg m^2].   seed 001 eq. (2), spec A.2.4
-  Mat3 J_tr(const Vec<M>& gamma) const noexcept {
-    const Mat<3, M> S = A_cs(gamma);
-    const Mat<3, M> T = A_ct(gamma);
-    Mat3 J = J_s;
+  Mat3S J_tr(const Vec<M, S>& gamma) const noexcept {
+    const Mat<3, M, S> Sc = A_cs(gamma);
+    const Mat<3, M, S> T = A_ct(gamma);
+    Mat3S J = J_s;
     for (int i = 0; i < M; ++i) {
-      J += I_cs(i) * S.col(i) * S.col(i).transpose();
+      J += I_cs(i) * Sc.col(i) * Sc.col(i).transpose();
       J += I_ct(i) * T.col(i) * T.col(i).transpose();
       J += I_cg(i) * A_cg.col(i) * A_cg.col(i).transpose();
     }
@@ -80,9 +100,9 @@ struct VscmgGeometry {
   }
   //! Q_act(gamma) = [A_ct(gamma) H_cw, A_ws I_wws] [N m s | kg m^2]: torque per unit input
   //! (with a minus sign).   seed 001 eq. (11)
-  Mat<3, M + N> Q_act(const Vec<M>& gamma) const noexcept {
-    Mat<3, M + N> Q;
-    const Mat<3, M> T = A_ct(gamma);
+  Mat<3, M + N, S> Q_act(const Vec<M, S>& gamma) const noexcept {
+    Mat<3, M + N, S> Q;
+    const Mat<3, M, S> T = A_ct(gamma);
     for (int i = 0; i < M; ++i) Q.col(i) = h_cw(i) * T.col(i);
     if constexpr (N > 0)
       for (int j = 0; j < N; ++j) Q.col(M + j) = I_wws(j) * A_ws.col(j);
@@ -90,9 +110,9 @@ struct VscmgGeometry {
   }
   //! Internal (actuator) momentum A_cs h_cw + A_cg I_cg gamma_dot + A_ws I_wws Omega_w [N m s].
   //! seed 001 eq. (1)
-  Vec3 internal_momentum(const Vec<M>& gamma, const Vec<M>& gamma_dot,
-                         const Vec<N>& Omega_w) const noexcept {
-    Vec3 H = A_cs(gamma) * h_cw + A_cg * I_cg.cwiseProduct(gamma_dot);
+  Vec<3, S> internal_momentum(const Vec<M, S>& gamma, const Vec<M, S>& gamma_dot,
+                              const Vec<N, S>& Omega_w) const noexcept {
+    Vec<3, S> H = A_cs(gamma) * h_cw + A_cg * I_cg.cwiseProduct(gamma_dot);
     // A pure CMG cluster has no wheel term: a product with the empty 3x0 A_ws would do pointer
     // arithmetic on its null data (undefined behaviour UBSan reports), so it is not formed.
     if constexpr (N > 0) H += A_ws * I_wws.cwiseProduct(Omega_w);
@@ -159,26 +179,28 @@ struct VscmgParams {
 namespace detail {
 //! Validity of a geometry: finite, J_s symmetric positive definite, inertias >= 0, h_cw >= 0.
 //! Then J_tr(gamma) is SPD for every gamma (a sum of J_s and PSD terms).
-template <int M, int N>
-inline bool vscmg_geometry_valid(const VscmgGeometry<M, N>& g) noexcept {
+template <int M, int N, class S>
+inline bool vscmg_geometry_valid(const VscmgGeometry<M, N, S>& g) noexcept {
   bool ok = all_finite(g.A_cg) && all_finite(g.A_cs0) && all_finite(g.A_ct0) &&
             all_finite(g.A_ws) && all_finite(g.I_cs) && all_finite(g.I_ct) &&
             all_finite(g.I_cg) && all_finite(g.h_cw) && all_finite(g.I_wws) && all_finite(g.J_s);
   if (!ok) return false;
-  ok = (g.I_cs.array() >= 0.0).all() && (g.I_ct.array() >= 0.0).all() &&
-       (g.I_cg.array() >= 0.0).all() && (g.h_cw.array() >= 0.0).all() &&
-       (g.I_wws.array() >= 0.0).all();
+  ok = (g.I_cs.array() >= S(0)).all() && (g.I_ct.array() >= S(0)).all() &&
+       (g.I_cg.array() >= S(0)).all() && (g.h_cw.array() >= S(0)).all() &&
+       (g.I_wws.array() >= S(0)).all();
   if (!ok) return false;
-  if ((g.J_s - g.J_s.transpose()).norm() > 1e-12 * g.J_s.norm()) return false;
-  const Eigen::LLT<Mat3> llt(g.J_s);
+  // Symmetric to rounding of the scalar: 1e-12 relative in double, 1e-5 in float.
+  const S sym_tol = std::is_same_v<S, double> ? S(1e-12) : S(1e-5);
+  if ((g.J_s - g.J_s.transpose()).norm() > sym_tol * g.J_s.norm()) return false;
+  const Eigen::LLT<Mat<3, 3, S>> llt(g.J_s);
   return llt.info() == Eigen::Success;
 }
 }  // namespace detail
 
 //! True when the geometry is set and physical (see detail::vscmg_geometry_valid): what the plants
 //! and HybridAdaptive check at construction.
-template <int M, int N>
-inline bool valid(const VscmgGeometry<M, N>& g) noexcept {
+template <int M, int N, class S>
+inline bool valid(const VscmgGeometry<M, N, S>& g) noexcept {
   return detail::vscmg_geometry_valid(g);
 }
 
