@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <type_traits>
 
 #include "adcs/actuator/saturation.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
@@ -23,6 +24,7 @@
 #include "scenarios/status_counts.hpp"
 #include "scenarios/verdicts.hpp"
 #include "sim/closed_loop.hpp"
+#include "sim/law_at_scalar.hpp"
 #include "sim/metrics.hpp"
 #include "sim/random.hpp"
 #include "sim/recorder.hpp"
@@ -33,12 +35,27 @@ namespace ADCS_UNITY_ID {
 
 constexpr int kM = 4, kN = 3;
 using FullPlant = VscmgFullPlant<kM, kN>;
-//! The law in the scalar of `--set scalar` (issue 19); the plant stays double under the integrator.
+//! The law in the scalar of `--set scalar` (issue 19) behind the loop's double interface
+//! (sim/law_at_scalar.hpp); the plant stays double under the integrator.
 template <class S>
 using Controller = HybridAdaptive<kM, kN, S>;
+using HybridLaw = LawAtScalar<Controller>;
 
 
 constexpr const char* kA5 = "assumed (spec A.5)";
+
+//! |Θ̂_cGi|² (i = 1..M) then |Θ̂_wGj|² (j = 1..N), in double whatever the law's scalar.
+Vec<kM + kN> estimate_norms2(const HybridLaw& law) noexcept {
+  return law.visit([](const auto& c) noexcept {
+    Vec<kM + kN> n;
+    for (int i = 0; i < kM; ++i) n(i) = static_cast<double>(c.theta_cG(i).squaredNorm());
+    for (int j = 0; j < kN; ++j) n(kM + j) = static_cast<double>(c.theta_wG(j).squaredNorm());
+    return n;
+  });
+}
+std::uint32_t safeguard_count(const HybridLaw& law) noexcept {
+  return law.visit([](const auto& c) noexcept { return c.safeguard_count(); });
+}
 
 //! Per-sample errors of the no-adaptation run, overlaid on the adaptive run's plots (Figs. 2-5).
 struct BaselineTrace {
@@ -257,20 +274,11 @@ class HybridScenario final : public Scenario {
     return c;
   }
 
-  //! One closed-loop run with the law in the scalar `scalar` names.
-  RunResult simulate(const ParamSet& p, const RunContext& ctx, const BaselineTrace* overlay,
-                     BaselineTrace* capture) const {
-    return read_config(p, prototype()).scalar == "float" ? simulate_as<float>(p, ctx, overlay, capture)
-                                                         : simulate_as<double>(p, ctx, overlay, capture);
-  }
-
   //! One closed-loop run. `overlay` (optional) adds the no-adaptation errors as CSV columns;
   //! `capture` (optional) stores this run's per-sample errors for such an overlay. The law runs
-  //! in S: its parameters, inputs and outputs cross the boundary through cast<S>() and back.
-  template <class S>
-  RunResult simulate_as(const ParamSet& p, const RunContext& ctx, const BaselineTrace* overlay,
-                        BaselineTrace* capture) const {
-    using Ctrl = Controller<S>;
+  //! in the scalar `scalar` names (HybridLaw: parameters and inputs cast into it, commands back).
+  RunResult simulate(const ParamSet& p, const RunContext& ctx, const BaselineTrace* overlay,
+                     BaselineTrace* capture) const {
     const HybridConfig c = read_config(p, prototype());
     // --- configuration (spec §A.5) ---
     VscmgGeometry<kM, kN> nominal = pyramid_4cmg_3rw_nominal();
@@ -363,15 +371,19 @@ class HybridScenario final : public Scenario {
     // H_I^n from the nominal model at t = 0 (σ = 0, ω = 0, γ = 0).
     const Vec3 H_n_model = nominal.internal_momentum(Vec<kM>::Zero(), Vec<kM>::Zero(), Omega0);
     cp.H_I_n = c.H_I_n == "zero" ? Vec3::Zero() : H_n_model;
-    Ctrl ctrl(cp.template cast<S>());
+    HybridLaw ctrl({cp, c.scalar == "float"});
     if (ctrl.status() != Status::ok) throw ParamError("controller parameters rejected (alpha, beta, delta, gains)");
     if (c.initial_estimates == "truth") {  // spec §A.7 S11: the oracle controller
       Mat<6, kM> th_c;
       Mat<3, kN> th_w;
       for (int i = 0; i < kM; ++i) th_c.col(i) = dev.theta_cG(i);
       for (int j = 0; j < kN; ++j) th_w.col(j) = dev.theta_wG(j);
-      if (ctrl.set_estimates(scalar_cast<S>(Vec3(H_true - cp.H_I_n)), scalar_cast<S>(th_c), scalar_cast<S>(th_w)) !=
-          Status::ok)
+      const Vec3 theta_F0 = H_true - cp.H_I_n;
+      const Status set = ctrl.visit([&](auto& law) noexcept {
+        using S = typename std::decay_t<decltype(law)>::Scalar;
+        return law.set_estimates(scalar_cast<S>(theta_F0), scalar_cast<S>(th_c), scalar_cast<S>(th_w));
+      });
+      if (set != Status::ok)
         throw ParamError("initial_estimates=truth: deviations outside the projection ball");
     }
 
@@ -438,7 +450,8 @@ class HybridScenario final : public Scenario {
     auto sensors = [&](double t, const HybridSimPlant::State& xs, const HybridSimPlant::Input& u_held) {
       const FullPlant::State xp = xs.head<FullPlant::kStateSize>();
       if (faulty && !fdir_applied && t >= t_fdir) {  // the FDIR report reaches the controller
-        if (ctrl.set_available(all_actuators<kM + kN>() & ~(ActuatorMask{1} << k_fail)) != Status::ok)
+        const ActuatorMask mask = all_actuators<kM + kN>() & ~(ActuatorMask{1} << k_fail);
+        if (ctrl.visit([mask](auto& law) noexcept { return law.set_available(mask); }) != Status::ok)
           throw SimError("hybrid fault: actuator mask rejected");
         fdir_applied = true;
       }
@@ -448,12 +461,12 @@ class HybridScenario final : public Scenario {
       m.actuators.gamma_rad = FullPlant::gamma(xp);
       m.actuators.Omega_rad_s = FullPlant::Omega_w(xp);
       m.reference = ref.sample(t, xs.tail<3>());
-      return m.template cast<S>();  // beyond float range: ±Inf (core/types.hpp narrow_scalar)
+      return m;
     };
-    using Output = typename Ctrl::Output;
+    using Output = HybridLaw::Output;
     auto to_actuation = [](double, const HybridSimPlant::State&, const Output& cmd) { return cmd; };
     auto to_plant = [&](double t, const HybridSimPlant::State&, const Output& cmd, HybridSimPlant::Input& u) {
-      u = cmd.stacked().template cast<double>();
+      u = cmd.stacked();
       if (saturate_each<kM + kN>(u, u_limit) > 0) ++limit_hits;  // spec A.5: flag if hit
       if (t >= t_fault) u(k_fail) = 0.0;  // frozen gimbal (γ̇ = 0) / lost wheel (no torque)
     };
@@ -464,7 +477,7 @@ class HybridScenario final : public Scenario {
       if (!s.final) {  // once per control step
         if (s.controller_status != Status::ok) ++nonok;
         statuses.add(s.controller_status);
-        const Vec<kM + kN> commanded = s.command.stacked().template cast<double>();
+        const Vec<kM + kN> commanded = s.command.stacked();
         if (!all_finite(commanded)) ++nonfinite_cmd;
         if (fdir_applied) failed_cmd_after_fdir = std::max(failed_cmd_after_fdir, std::abs(commanded(k_fail)));
         gimbal_rate_peak = std::max(gimbal_rate_peak, commanded.head<kM>().cwiseAbs().maxCoeff());
@@ -477,7 +490,7 @@ class HybridScenario final : public Scenario {
       const double e_att = ypr.cwiseAbs().maxCoeff();
       const double e_p = mrp_principal_angle(dcm_to_mrp(C_e));
       const double e_rate = (plant.omega_BN_B(xp, u) - C_e * ref.omega(t)).norm();  // spec #28
-      const Vec3 theta_F = ctrl.theta_F().template cast<double>();
+      const Vec3 theta_F = ctrl.visit([](const auto& law) noexcept -> Vec3 { return law.theta_F().template cast<double>(); });
       const Vec3 H_est = cp.H_I_n + theta_F;
       const Vec3 H_now = plant.momentum_N(xp);  // = H_true(0) when τ_ext = 0 (spec S4)
       const double E_H = (H_est - H_now).norm();
@@ -499,9 +512,10 @@ class HybridScenario final : public Scenario {
         e_p_pre = std::max(e_p_pre, e_p);
       }
       E_H_final = E_H;
-      for (int i = 0; i < kM; ++i) proj_max = std::max(proj_max, double(ctrl.theta_cG(i).squaredNorm()));
-      for (int j = 0; j < kN; ++j) proj_max = std::max(proj_max, double(ctrl.theta_wG(j).squaredNorm()));
-      const double pinv_sigma_min = s.controller_diagnostics.steering.pinv.sigma_min;
+      const Vec<kM + kN> theta_G_norm2 = estimate_norms2(ctrl);
+      proj_max = std::max(proj_max, theta_G_norm2.maxCoeff());
+      const double pinv_sigma_min = ctrl.visit(
+          s.controller_diagnostics, [](const auto& d) noexcept { return static_cast<double>(d.steering.pinv.sigma_min); });
       if (t > 0.0) sigma_min = std::min(sigma_min, pinv_sigma_min);
       gimbal_max = std::max(gimbal_max, FullPlant::gamma(xp).cwiseAbs().maxCoeff());
       wheel_max = std::max(wheel_max, (FullPlant::Omega_w(xp) - Omega0).cwiseAbs().maxCoeff());
@@ -517,8 +531,7 @@ class HybridScenario final : public Scenario {
         for (int k = 0; k < 3; ++k) row.push_back(theta_F(k));
         for (int k = 0; k < 3; ++k) row.push_back(H_est(k));
         for (int k = 0; k < 3; ++k) row.push_back(H_now(k));
-        for (int i = 0; i < kM; ++i) row.push_back(double(ctrl.theta_cG(i).squaredNorm()));
-        for (int j = 0; j < kN; ++j) row.push_back(double(ctrl.theta_wG(j).squaredNorm()));
+        for (int k = 0; k < kM + kN; ++k) row.push_back(theta_G_norm2(k));
         row.push_back(pinv_sigma_min);
         if (overlay) {
           const bool have = sample < overlay->principal_err.size();
@@ -545,7 +558,7 @@ class HybridScenario final : public Scenario {
                  {"principal_err_ss_max_rad", e_p_max},
                  {"rate_err_ss_max_rad_s", e_rate_max},
                  {"proj_norm2_max", proj_max},
-                 {"proj_safeguard_count", double(ctrl.safeguard_count())},
+                 {"proj_safeguard_count", double(safeguard_count(ctrl))},
                  {"momentum_drift_rel", drift_max / std::max(H_true.norm(), 1e-12)},
                  {"momentum_est_err_final_Nms", E_H_final},
                  {"pinv_sigma_min", sigma_min},
@@ -566,7 +579,7 @@ class HybridScenario final : public Scenario {
       r.claims.push_back({"check", "actuator limits (optional, spec A.5) never reached",
                           "0 samples clipped (PROTO peaks 3.1e-3 rad/s, 8e-6 rad/s^2)",
                           std::to_string(limit_hits) + " samples clipped", limit_hits == 0});
-    add_claims(r, c.beta_G, e_att_max, e_p_max, e_rate_max, proj_max, ctrl.safeguard_count(), sigma_min, E_H0,
+    add_claims(r, c.beta_G, e_att_max, e_p_max, e_rate_max, proj_max, safeguard_count(ctrl), sigma_min, E_H0,
                E_H_late_max, gimbal_max, wheel_max, variant_ == Variant::paper && mode == "D1" && ctx.seed == 0);
     const std::string n = name();
     r.plots = {
