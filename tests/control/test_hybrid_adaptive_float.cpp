@@ -16,6 +16,7 @@
 
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
+#include "tp_ctrl_rk4.hpp"
 
 namespace ADCS_UNITY_ID {
 using CtrlD = adcs::HybridAdaptive<4, 3>;
@@ -118,19 +119,7 @@ struct FloatLoop {
       in.reference = ref.sample(t, sigma_d);
       typename Ctrl::Output c;
       if (ctrl.step(in.template cast<S>(), c) != Status::ok) ++nonok;
-      const adcs::Vec<7> u = c.stacked().template cast<double>();
-      auto f = [&](double tt, const Plant::State& xs, const Vec3& sd, Plant::State& dx, Vec3& dsd) {
-        plant.derivative(tt, xs, u, dx);
-        dsd = ref.sigma_dot(tt, sd);
-      };
-      Plant::State k1, k2, k3, k4;
-      Vec3 d1, d2, d3, d4;
-      f(t, x, sigma_d, k1, d1);
-      f(t + 0.5 * h, Plant::State(x + 0.5 * h * k1), Vec3(sigma_d + 0.5 * h * d1), k2, d2);
-      f(t + 0.5 * h, Plant::State(x + 0.5 * h * k2), Vec3(sigma_d + 0.5 * h * d2), k3, d3);
-      f(t + h, Plant::State(x + h * k3), Vec3(sigma_d + h * d3), k4, d4);
-      x += h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
-      sigma_d += h / 6.0 * (d1 + 2 * d2 + 2 * d3 + d4);
+      adcs_test::tp_ctrl_rk4_step(plant, ref, t, h, c.stacked().template cast<double>(), x, sigma_d);
       if (t >= duration - 10.0) e_max_late = std::max(e_max_late, (Plant::sigma_BN(x) - sigma_d).norm());
     }
   }
