@@ -1,9 +1,9 @@
 # Cortex-M7 checks (docs/TARGET.md), target adcs_target_check (not in ALL), ctest label target:
 #  1. compile check: every public header of include/adcs checked on its own by arm-none-eabi-g++
 #     with flight flags (no exceptions, no RTTI, Eigen heap forbidden; -fsyntax-only), plus five
-#     translation units that instantiate every controller/plant template with concrete sizes and
-#     compile them to M7 code (a header alone does not instantiate its templates). Any warning
-#     fails.
+#     translation units that instantiate every controller/plant template with concrete sizes
+#     (a header alone does not instantiate its templates; -fsyntax-only too, see 1b). Any
+#     warning fails.
 #  2. replays of the four paper controllers/estimators (tests/target): inputs recorded at build
 #     time from host closed loops, replayed on the host and on QEMU mps2-an500 (separate CMake
 #     project tests/target with cmake/arm-none-eabi.cmake, built into <build>/target), compared
@@ -98,23 +98,28 @@ foreach(h IN LISTS ADCS_PUBLIC_HEADERS)
   list(APPEND _outputs ${stamp})
   list(APPEND _header_paths ${PROJECT_SOURCE_DIR}/include/${h})
 endforeach()
-# 1b. Every flight template instantiated with concrete sizes and compiled to M7 code, in five
-#     units (tests/target/instantiate_*.cpp: attitude and seed 001, seeds 002, 003, 004, and the
-#     27-state filter) that the cores build side by side. Compiled by clang++-14
+# 1b. Every flight template instantiated with concrete sizes for the M7, in five units
+#     (tests/target/instantiate_*.cpp: attitude and seed 001, seeds 002, 003, 004, and the
+#     27-state filter) that the cores build side by side: every member of every class and free
+#     function template goes through the front end with the M7's types (32-bit int/long/size_t),
+#     newlib and libstdc++, and its warnings fail the build. Compiled by clang++-14
 #     --target=arm-none-eabi like the headers of 1a (same flags, arm-none-eabi-g++'s libstdc++ and
 #     newlib): g++ spends ~90 % of these units in template instantiation (instantiate_seed004.cpp
-#     101 s with arm-none-eabi-g++ -O2, 35 s with clang; instantiate_attitude.cpp 90 s and 32 s).
-#     arm-none-eabi-g++ still compiles with -Werror the umbrella header and the replay ELFs of
-#     part 2, i.e. every step the paper systems run on the board (docs/DECISIONS.md, "CI under 20
-#     minutes"). Without clang++-14 the units go to g++ as before.
+#     101 s with arm-none-eabi-g++ -O2, 35 s with clang). -fsyntax-only: the code generation,
+#     half of clang's time here (instantiate_seed004.cpp 41 -> 18 CPU-s, instantiate_attitude.cpp
+#     41 -> 19), adds no diagnostic for this code, and M7 code is what arm-none-eabi-g++ generates
+#     with -Werror for the umbrella header and the replay ELFs of part 2, i.e. every step the
+#     paper systems run on the board (docs/DECISIONS.md, "CI under 20 minutes", items 8 and 19).
+#     Without clang++-14 the units go to g++, also -fsyntax-only (g++ instantiates there too).
 foreach(unit attitude seed002 seed003 seed004 eskf27)
   set(_inst ${PROJECT_SOURCE_DIR}/tests/target/instantiate_${unit}.cpp)
-  add_custom_command(OUTPUT ${_gen}/instantiate_${unit}.o
+  add_custom_command(OUTPUT ${_gen}/instantiate_${unit}.ok
     COMMAND ${_m7_cxx} -I${PROJECT_SOURCE_DIR}/include -I${PROJECT_SOURCE_DIR}/src
-            -isystem ${_eigen_inc} -c ${_inst} -o ${_gen}/instantiate_${unit}.o
+            -isystem ${_eigen_inc} -fsyntax-only ${_inst}
+    COMMAND ${CMAKE_COMMAND} -E touch ${_gen}/instantiate_${unit}.ok
     DEPENDS ${_inst} ${_header_paths}
-    COMMENT "${_m7_who} (Cortex-M7) instantiate_${unit}.cpp" VERBATIM)
-  list(APPEND _outputs ${_gen}/instantiate_${unit}.o)
+    COMMENT "${_m7_who} -fsyntax-only (Cortex-M7) instantiate_${unit}.cpp" VERBATIM)
+  list(APPEND _outputs ${_gen}/instantiate_${unit}.ok)
 endforeach()
 # 1c. Cortex-M4F, single precision (issue 19): the float instances compiled for an FPU without
 #     double (-mfpu=fpv4-sp-d16) by arm-none-eabi-g++ with -Wdouble-promotion -Wfloat-conversion
@@ -211,10 +216,24 @@ target_compile_options(adcs_replay_host_flags INTERFACE -ffp-contract=off)
 target_compile_definitions(adcs_replay_host_flags INTERFACE EIGEN_DONT_VECTORIZE)
 target_include_directories(adcs_replay_host_flags INTERFACE ${_tr} ${PROJECT_SOURCE_DIR}/src)  # scenarios/seed003_data.hpp
 target_link_libraries(adcs_replay_host_flags INTERFACE adcs::adcs adcs_warnings)
+# Seed 001's gain table (replay_gains_hybrid.hpp): designed on the host by design_gains.cpp, the
+# ground segment, and compiled into the hybrid System on every side, which builds its law from
+# it (HybridAdaptive(params, gains)) and so compiles no pole placement or Lyapunov solve: ~30 %
+# of the M7 replay's arm-none-eabi-g++ time, ~45 % of a float one's on the M4F
+# (docs/DECISIONS.md, "CI under 20 minutes", item 20).
+add_executable(adcs_design_gains EXCLUDE_FROM_ALL ${_tr}/design_gains.cpp)
+target_link_libraries(adcs_design_gains PRIVATE adcs_replay_host_flags)
+set_target_properties(adcs_design_gains PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
+add_custom_command(OUTPUT ${_rgen}/replay_gains_hybrid.hpp
+  COMMAND adcs_design_gains ${_rgen}/replay_gains_hybrid.hpp
+  DEPENDS adcs_design_gains
+  COMMENT "Designing seed 001's replay gains on the host (K, P)" VERBATIM)
+target_include_directories(adcs_replay_host_flags INTERFACE ${_rgen})
 foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)
   add_library(adcs_replay_core_${sys} OBJECT EXCLUDE_FROM_ALL ${_tr}/replay_${sys}.cpp)
   target_link_libraries(adcs_replay_core_${sys} PUBLIC adcs_replay_host_flags)
 endforeach()
+target_sources(adcs_replay_core_hybrid PRIVATE ${_rgen}/replay_gains_hybrid.hpp)
 
 # The recorder closes each paper loop around the System cores and writes the input rows.
 add_executable(adcs_record_inputs EXCLUDE_FROM_ALL ${_tr}/record_inputs.cpp)
@@ -241,7 +260,7 @@ add_custom_command(OUTPUT ${_rgen}/cfs_expected.h
   COMMAND adcs_c_example_reference ${_rgen}/cfs_expected.h
   DEPENDS adcs_c_example_reference
   COMMENT "C example: the C++ components' results for the Cortex-M7 run" VERBATIM)
-list(APPEND _inputs ${_rgen}/cfs_expected.h)
+list(APPEND _inputs ${_rgen}/cfs_expected.h ${_rgen}/replay_gains_hybrid.hpp)
 add_custom_target(adcs_replay_inputs DEPENDS ${_inputs})
 
 foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)

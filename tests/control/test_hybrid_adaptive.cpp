@@ -97,6 +97,67 @@ TEST(HybridAdaptive, GainsAndLyapunovMatrixS7) {
   EXPECT_NEAR(c.J_n()(0, 0), 120.0613, 1e-4);
 }
 
+// Gains designed on the ground (HybridAdaptive(params, gains)): the designed table gives the same
+// law bit for bit; a table that does not belong to Q_L, is not SPD, destabilises A_1 or is not
+// finite is refused with the failure command.
+TEST(HybridAdaptive, GroundDesignedGainsAreCheckedAndGiveTheSameLaw) {
+  const Ctrl::Params p = controller_params();
+  adcs::HybridAdaptiveGains<double> g;
+  ASSERT_EQ(adcs::design_hybrid_adaptive_gains(p.poles, p.Q_L, g), Status::ok);
+  Ctrl a(p), b(p, g);
+  ASSERT_EQ(b.status(), Status::ok);
+  EXPECT_EQ(a.K(), b.K());
+  EXPECT_EQ(a.P(), b.P());
+  EXPECT_EQ(a.J_n(), b.J_n());
+  Ctrl::Input in;
+  in.state.sigma_BN << 0.01, 0.02, -0.01;
+  in.state.omega_BN_B << 1e-3, -2e-3, 5e-4;
+  in.actuators.gamma_rad << 0.1, -0.2, 0.05, 0.0;
+  for (int k = 0; k < 20; ++k) {
+    Ctrl::Output ua, ub;
+    ASSERT_EQ(a.step(in, ua), Status::ok);
+    ASSERT_EQ(b.step(in, ub), Status::ok);
+    const adcs::Vec<7> sa = ua.stacked(), sb = ub.stacked();
+    ASSERT_EQ(std::memcmp(sa.data(), sb.data(), sizeof(double) * 7), 0);
+  }
+  EXPECT_EQ(a.theta_F(), b.theta_F());
+
+  auto refused = [&](const adcs::HybridAdaptiveGains<double>& bad, const Ctrl::Params& q) {
+    Ctrl c(q, bad);
+    Ctrl::Output u;
+    u.gamma_dot_rad_s.setConstant(1.0);
+    return c.status() == Status::invalid_parameter && c.step(in, u) == Status::invalid_parameter &&
+           u.stacked().isZero(0.0);
+  };
+  EXPECT_TRUE(refused(adcs::HybridAdaptiveGains<double>{}, p));  // no default: NaN
+  adcs::HybridAdaptiveGains<double> bad = g;
+  bad.P(0, 0) *= 1.001;  // P no longer solves the Lyapunov equation of this K and Q_L
+  EXPECT_TRUE(refused(bad, p));
+  bad = g;
+  bad.P(0, 3) += 1e-3;  // asymmetric
+  EXPECT_TRUE(refused(bad, p));
+  bad = g;
+  bad.K *= -1.0;  // A_1 unstable: the Lyapunov equation then has P negative definite
+  bad.P *= -1.0;
+  EXPECT_TRUE(refused(bad, p));
+  bad = g;
+  bad.K(1, 4) = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(refused(bad, p));
+  Ctrl::Params q = p;
+  q.Q_L *= 2.0;  // the table was designed for another Q_L
+  EXPECT_TRUE(refused(g, q));
+  // The ground design refuses what the parameter constructor refuses: unstable poles, Q_L not SPD.
+  adcs::HybridAdaptiveGains<double> untouched;
+  q = p;
+  q.poles[0][0] = {0.2, 0.2};
+  q.poles[0][1] = {0.2, -0.2};
+  EXPECT_EQ(adcs::design_hybrid_adaptive_gains(q.poles, q.Q_L, untouched), Status::invalid_parameter);
+  q = p;
+  q.Q_L(5, 5) = -1.0;
+  EXPECT_EQ(adcs::design_hybrid_adaptive_gains(q.poles, q.Q_L, untouched), Status::invalid_parameter);
+  EXPECT_TRUE(untouched.K.array().isNaN().all());
+}
+
 TEST(HybridAdaptive, ParameterisationIsExactS8) {
   const adcs::VscmgParams<4, 3> pp = adcs::vscmg_params_A_REF();
   const Plant plant(pp);

@@ -58,9 +58,21 @@ TEST(HybridAdaptiveFloat, DesignIsTheDoubleDesignRoundedOnce) {
   // K and P come from the double design (pole placement, Lyapunov solve) and are rounded once.
   EXPECT_EQ(f.K(), d.K().cast<float>());
   EXPECT_EQ(f.P(), d.P().cast<float>());
-  // J_n = J_tr(0) is formed in double from the float geometry cast back: within float rounding
-  // of the geometry (relative 6e-8 per entry, a sum of ~20 terms).
+  // J_n = J_tr(0) is formed in float from the float geometry: within float rounding of the
+  // geometry and of the sum (relative 6e-8 per entry, a sum of ~20 terms).
   EXPECT_LT((f.J_n().cast<double>() - d.J_n()).norm(), 1e-6 * d.J_n().norm());
+  // The same law from the double table rounded once (a gain table uploaded to a float build):
+  // checked in float (residual within 4096 rounding units) and accepted, equal to the above.
+  adcs::HybridAdaptiveGains<double> g;
+  ASSERT_EQ(adcs::design_hybrid_adaptive_gains(params_d().poles, params_d().Q_L, g), Status::ok);
+  const CtrlF t(params_d().cast<float>(), g.cast<float>());
+  ASSERT_EQ(t.status(), Status::ok);
+  EXPECT_EQ(t.K(), f.K());
+  EXPECT_EQ(t.P(), f.P());
+  EXPECT_EQ(t.J_n(), f.J_n());
+  adcs::HybridAdaptiveGains<float> bad = g.cast<float>();
+  bad.P(1, 1) *= 1.01f;  // not this K's Lyapunov matrix, by far more than float rounding
+  EXPECT_EQ(CtrlF(params_d().cast<float>(), bad).status(), Status::invalid_parameter);
 }
 
 TEST(HybridAdaptiveFloat, StepMatchesDoubleOnRandomInputs) {

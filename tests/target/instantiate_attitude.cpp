@@ -1,4 +1,4 @@
-// Cortex-M7 instantiation unit 1 of 5 (cmake/TargetCheck.cmake): attitude math, the rigid and
+// Cortex-M7 instantiation unit 1 of 5 (cmake/TargetCheck.cmake, -fsyntax-only): attitude math, the rigid and
 // VSCMG plants, wheel allocation, CMG steering and the seed 001 laws, with concrete sizes, and a
 // flight-style entry point calling the non-template functions, so the compile check sees real
 // code, not just declarations. The five units together instantiate every flight template;

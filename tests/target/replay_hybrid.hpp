@@ -1,11 +1,11 @@
 #pragma once
 // Replay core of seed 001 (control/hybrid_adaptive.hpp): HybridAdaptive<4, 3> on the A-REF
-// configuration of src/scenarios/hybrid_adaptive.cpp (nominal 4-CMG pyramid + 3 wheels, the
-// paper's gains, T_c = 1 ms, explicit-Euler adaptation, H_I^n = 0 because Ω_w(0) = 0). One
+// configuration (replay_hybrid_params.hpp), built from the gain table designed on the host
+// (replay_gains_hybrid.hpp, written by design_gains.cpp) as a flight build would be. One
 // step() = one HybridAdaptive::step() (as BM_HybridAdaptive_Step). Used by the host and target
 // replays and by record_inputs.cpp, which closes the loop around this very object.
-#include "adcs/control/hybrid_adaptive.hpp"
-#include "adcs/plant/vscmg_configurations.hpp"
+#include "replay_gains_hybrid.hpp"  // generated in the build tree by design_gains
+#include "replay_hybrid_params.hpp"
 #include "replay_system.hpp"
 
 namespace replay {
@@ -17,7 +17,7 @@ class HybridSystem {
   // Row: σ_BN (3), ω_BN_B (3), γ (4), Ω_w (3), σ_d (3), σ̇_d (3), σ̈_d (3).
   static constexpr int kInputWidth = 22;
   static constexpr int kCommandSize = 7, kParts = 1;
-  static constexpr double kPeriod = 1.0e-3;  // [s] T_c, HybridAdaptiveParams default (spec A.5)
+  static constexpr double kPeriod = kHybridPeriod;
   // Comparison scales (replay_system.hpp, Column): per group of like outputs, a power of ten at
   // or below the smallest of their largest |value|s over the recorded run, so that the 1e-12
   // tolerance means 12 significant digits of the signal, not of a value passing through zero.
@@ -36,14 +36,9 @@ class HybridSystem {
       {"thc46", kThS}, {"thw11", kThW},     {"thw12", kThW}, {"thw13", kThW}, {"thw21", kThW},
       {"thw22", kThW}, {"thw23", kThW},     {"thw31", kThW}, {"thw32", kThW}, {"thw33", kThW}};
 
-  static Controller::Params params() noexcept {
-    Controller::Params p;
-    p.nominal = adcs::pyramid_4cmg_3rw_nominal();  // spec A.5 A-REF; the remaining fields are seed 001 §4
-    p.period_s = kPeriod;
-    return p;
-  }
-
-  HybridSystem() noexcept : ctrl_(params()) {}
+  //! The A-REF law (replay_hybrid_params.hpp), its gains from the table designed on the host
+  //! (checked by the constructor against Q_L, as an uploaded table would be).
+  HybridSystem() noexcept : ctrl_(hybrid_params(), hybrid_gains<double>()) {}
   adcs::Status init_status() const noexcept { return ctrl_.status(); }
 
   void step(const double* row) noexcept {

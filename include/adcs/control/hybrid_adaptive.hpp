@@ -5,15 +5,20 @@
 //   F* = F*n + Y_F Θ_F,  G* = G*n + Y_G Θ_G  (Θ_F = H_I^Δ, Θ_Gk = axis deviations)  seed 001 eqs. (15)-(20)
 //   u = X⁺ v,  X = G*n + Y_G Θ̂_G,  v = −K e − F*n − Y_F Θ̂_F + σ̈_d                   seed 001 eq. (24)
 //   Θ̂̇_F = α_F Y_Fᵀ B0ᵀ P e,  Θ̂̇_Gk = Proj(Θ̂_Gk, Y_Gkᵀ B0ᵀ P e u_k)               seed 001 eqs. (25)-(26)
-// K from the closed-loop eigenvalues and P from A_1ᵀP + PA_1 = −Q_L are computed once at
-// construction; step() is the per-sample arithmetic, estimates integrated by explicit Euler at
-// the control period (spec §A.3 step 13) with the discrete radial safeguard (counted).
-// α_F = α_G = 0 gives the non-adaptive baseline.
-// Scalar (issue 19): HybridAdaptive<M, N, S>. The design (K by pole placement, P from the
-// Lyapunov equation, J_n⁻¹) is computed once in double from the parameters and rounded to S once;
-// step() runs entirely in S.
+// K from the closed-loop eigenvalues and P from A_1ᵀP + PA_1 = −Q_L (the gains) are designed
+// once, before the first step; step() is the per-sample arithmetic, estimates integrated by
+// explicit Euler at the control period (spec §A.3 step 13) with the discrete radial safeguard
+// (counted). α_F = α_G = 0 gives the non-adaptive baseline.
+// Two constructors: from the parameters alone (the gains designed in double at construction,
+// design_hybrid_adaptive_gains), or from the parameters and gains designed on the ground
+// (HybridAdaptiveGains, checked on entry: P SPD, A_1ᵀP + PA_1 = −Q_L, A_1 Hurwitz). The second is
+// what a flight build uploads: no pole placement, no Schur-based Lyapunov solve and no double
+// arithmetic on board (a float law on a single-precision FPU compiles none of them).
+// Scalar (issue 19): HybridAdaptive<M, N, S>. The design runs in double and is rounded to S once;
+// J_n = J_tr(0) and its inverse are formed in S from the nominal geometry; step() runs in S.
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include "adcs/actuator/steering.hpp"
 #include "adcs/adapt/normalized_step.hpp"
@@ -86,6 +91,44 @@ struct HybridAdaptiveParams {
   }
 };
 
+//! The gains of seed 001's law (seed 001 §3, eq. (14)): K = [K_p K_d] with A_1 = A_0 − B_0 K, and P
+//! with A_1ᵀP + PA_1 = −Q_L. No default (NaN: refused until set), from
+//! design_hybrid_adaptive_gains on the ground or from a gain table.
+template <class S = double>
+struct HybridAdaptiveGains {
+  Mat<3, 6, S> K = Mat<3, 6, S>::Constant(unset_v<S>);  //!< [1/s², 1/s] state feedback of σ̈ = v
+  Mat<6, 6, S> P = Mat<6, 6, S>::Constant(unset_v<S>);  //!< [-] Lyapunov matrix of A_1 and Q_L
+  template <class T>
+  HybridAdaptiveGains<T> cast() const noexcept {
+    return {scalar_cast<T>(K), scalar_cast<T>(P)};
+  }
+};
+
+//! The ground design of seed 001 §3 in double: K places one eigenvalue pair per axis
+//! (math/place.hpp); P solves A_1ᵀP + PA_1 = −Q_L (math/lyapunov.hpp), Q_L given in any scalar S
+//! and cast to double. ok, or invalid_parameter (poles not finite conjugate pairs in the open
+//! left half-plane, Q_L not SPD, the Lyapunov solve failed) with `g` untouched.
+//! A template (in S) on purpose: a unit that never calls it compiles none of the Schur-based
+//! solve, which a non-template inline function would instantiate wherever this header goes.
+template <class S>
+Status design_hybrid_adaptive_gains(const AxisPoles<3>& poles, const Mat<6, 6, S>& Q_L_in,
+                                    HybridAdaptiveGains<double>& g) noexcept {
+  const Mat6 Q_L = scalar_cast<double>(Q_L_in);
+  Mat<3, 6> K;
+  Mat6 P;
+  // Hurwitz poles: s² + k_d s + k_p has both roots in the open left half-plane iff k_p, k_d > 0.
+  if (place_double_integrator<3>(poles, K) != Status::ok ||
+      !(K.leftCols<3>().diagonal().array() > 0.0).all() || !(K.rightCols<3>().diagonal().array() > 0.0).all())
+    return Status::invalid_parameter;
+  // Q_L SPD with a Hurwitz A_1 makes P SPD (seed 001 §3: A_1ᵀP + PA_1 = −Q_L).
+  if (!symmetric_positive_definite<6>(Q_L) ||
+      solve_continuous_lyapunov<6>(double_integrator_closed_loop<3>(K), Q_L, P) != Status::ok)
+    return Status::invalid_parameter;
+  g.K = K;
+  g.P = P;
+  return Status::ok;
+}
+
 template <int M, int N, class S = double>
 struct HybridAdaptiveInput {
   AttitudeStateT<S> state{};          //!< σ_BN (not shadow-switched, spec §A.2.4), ω_BN_B
@@ -120,34 +163,42 @@ class HybridAdaptive {
   using Vec6S = Vec<6, S>;
   using Mat3S = Mat<3, 3, S>;
 
-  explicit HybridAdaptive(const Params& p) noexcept : p_(p) {
-    // The design in double (a no-op cast for S = double), rounded to S once at the end.
-    const HybridAdaptiveParams<M, N, double> pd = p_.template cast<double>();
-    Mat<3, 6> K;
-    Mat6 P;
-    // Hurwitz poles: s² + k_d s + k_p has both roots in the open left half-plane iff k_p, k_d > 0.
-    bool ok = place_double_integrator<3>(pd.poles, K) == Status::ok &&
-              (K.template leftCols<3>().diagonal().array() > 0.0).all() &&
-              (K.template rightCols<3>().diagonal().array() > 0.0).all();
-    // Q_L SPD with a Hurwitz A_1 makes P SPD (seed 001 §3: A_1ᵀP + PA_1 = −Q_L).
-    ok = ok && symmetric_positive_definite<6>(pd.Q_L) && valid(p_.nominal) && valid(pd.nominal) &&
-         valid(p_.steering);
-    const Mat6 A1 = double_integrator_closed_loop<3>(K);
-    ok = ok && solve_continuous_lyapunov<6>(A1, pd.Q_L, P) == Status::ok;
-    const Mat3 J_n = pd.nominal.J_tr(Vec<M>::Zero());  // spec §A.3: J_n = J_tr(0), nominal geometry
-    const Eigen::LLT<Mat3> llt(J_n);
+  //! The gains designed here, in double (design_hybrid_adaptive_gains), and rounded to S once.
+  explicit HybridAdaptive(const Params& p) noexcept : HybridAdaptive(p, designed_gains(p)) {}
+
+  //! Gains designed on the ground (a gain table), checked before use: K and P finite, P
+  //! symmetric positive definite, the Lyapunov residual ‖A_1ᵀP + PA_1 + Q_L‖_F within
+  //! kLyapunovResidualUlps rounding units of its terms (2‖A_1‖_F‖P‖_F + ‖Q_L‖_F), and
+  //! −(A_1ᵀP + PA_1) positive definite, which with P SPD proves A_1 Hurwitz (Lyapunov). The
+  //! stability argument of seed 001 §3 needs exactly this pair, so a table must carry every digit
+  //! (hex floats, or 17 significant digits for double, 9 for float), as design_gains writes it.
+  //! In float, a pair whose P has a condition number near 1/ε (~1e7: poles spread over several
+  //! decades) can fail the positive-definiteness of −(A_1ᵀP + PA_1): rounded to float it no
+  //! longer proves stability, and the law is refused (measured: 31 of 2,000 random designs with
+  //! poles from 1e-3 to 1e2 rad/s; none in double).
+  static constexpr S kLyapunovResidualUlps = S(64);
+
+  HybridAdaptive(const Params& p, const HybridAdaptiveGains<S>& g) noexcept : p_(p) {
+    const Mat<6, 6, S> A1 = double_integrator_closed_loop<3, S>(g.K);
+    const Mat<6, 6, S> AtP = A1.transpose() * g.P;
+    const Mat<6, 6, S> Q_closed = -(AtP + AtP.transpose());  // −(A_1ᵀP + PA_1), symmetric by construction
+    const S scale = S(2) * A1.norm() * g.P.norm() + p_.Q_L.norm();
+    bool ok = all_finite(g.K) && symmetric_positive_definite<6, S>(g.P) &&
+              symmetric_positive_definite<6, S>(p_.Q_L) && symmetric_positive_definite<6, S>(Q_closed) &&
+              (p_.Q_L - Q_closed).norm() <= kLyapunovResidualUlps * std::numeric_limits<S>::epsilon() * scale;
+    ok = ok && valid(p_.nominal) && valid(p_.steering);
+    J_n_ = p_.nominal.J_tr(Vec<M, S>::Zero());  // spec §A.3: J_n = J_tr(0), nominal geometry
+    const Eigen::LLT<Mat3S> llt(J_n_);
     ok = ok && llt.info() == Eigen::Success;
-    const Mat3 J_n_inv = llt.solve(Mat3::Identity());
-    K_ = scalar_cast<S>(K);
-    P_ = scalar_cast<S>(P);
+    J_n_inv_ = llt.solve(Mat3S::Identity());
+    K_ = g.K;
+    P_ = g.P;
     B0tP_ = P_.template bottomRows<3>();  // B0ᵀP with B0 = [0; I3]
-    P22_norm_ = narrow_scalar<S>(P.template bottomRightCorner<3, 3>().norm());  // ‖P22‖_F for the step gain
-    J_n_ = scalar_cast<S>(J_n);
-    J_n_inv_ = scalar_cast<S>(J_n_inv);
+    P22_norm_ = P_.template bottomRightCorner<3, 3>().norm();  // ‖P22‖_F for the step gain
     proj_ = ProjectionParamsT<S>{p_.alpha_G, p_.beta_G, p_.delta_G};
     ok = ok && valid(proj_) && finite_nonnegative(p_.alpha_F) && finite_positive(p_.period_s) &&
          all_finite(p_.H_I_n) && all_finite(J_n_inv_) && finite_positive(p_.max_step_gain);
-    status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles, Q_L, nominal geometry, "
+    status_ = ADCS_CHECK(ok, "HybridAdaptive: invalid parameters (poles or gains, Q_L, nominal geometry, "
                              "steering, alpha, beta, delta, period)")
                   ? Status::ok
                   : Status::invalid_parameter;
@@ -155,7 +206,7 @@ class HybridAdaptive {
   }
 
   //! Construction outcome: ok, or invalid_parameter when the poles are not finite, conjugate
-  //! pairs in the open left half-plane; Q_L is not symmetric positive definite; the nominal
+  //! pairs in the open left half-plane (or the given gains fail the checks above); Q_L is not symmetric positive definite; the nominal
   //! geometry is invalid (VscmgGeometry: finite, J_s SPD, inertias and h_cw >= 0; it has no
   //! default) or J_n = J_tr(0) not SPD; the steering parameters are invalid; α_F < 0, α_G < 0,
   //! β_G <= 0, δ_G <= 0, T_c <= 0, λ_max <= 0 or any of them or H_I_n not finite. A refused law
@@ -326,6 +377,14 @@ class HybridAdaptive {
   }
 
  private:
+  //! design_hybrid_adaptive_gains on the parameters cast to double (a no-op for S = double),
+  //! rounded to S; NaN gains (refused by the checks) when the design fails.
+  static HybridAdaptiveGains<S> designed_gains(const Params& p) noexcept {
+    HybridAdaptiveGains<double> g;
+    (void)design_hybrid_adaptive_gains(p.poles, p.Q_L, g);
+    return g.template cast<S>();
+  }
+
   //! One Θ_G block over a control period: θ⁺ = θ + T Proj(θ, Φ) (seed 001 eq. (26), explicit Euler,
   //! spec §A.3 step 13), then the radial safeguard to β + δ. False on a projection failure.
   template <int K>

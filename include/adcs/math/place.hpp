@@ -40,10 +40,10 @@ Status place_double_integrator(const AxisPoles<Axes>& poles, Mat<Axes, 2 * Axes>
   return Status::ok;
 }
 
-//! A1 = A0 - B0 K for the block double integrator.
-template <int Axes>
-Mat<2 * Axes, 2 * Axes> double_integrator_closed_loop(const Mat<Axes, 2 * Axes>& K) noexcept {
-  Mat<2 * Axes, 2 * Axes> A1 = Mat<2 * Axes, 2 * Axes>::Zero();
+//! A1 = A0 - B0 K for the block double integrator (S explicit: `<3, float>`).
+template <int Axes, class S = double>
+Mat<2 * Axes, 2 * Axes, S> double_integrator_closed_loop(const identity_t<Mat<Axes, 2 * Axes, S>>& K) noexcept {
+  Mat<2 * Axes, 2 * Axes, S> A1 = Mat<2 * Axes, 2 * Axes, S>::Zero();
   A1.template topRightCorner<Axes, Axes>().setIdentity();
   A1.template bottomRows<Axes>() = -K;
   return A1;
