@@ -221,13 +221,17 @@ target_link_libraries(adcs_replay_host_flags INTERFACE adcs::adcs adcs_warnings)
 # it (HybridAdaptive(params, gains)) and so compiles no pole placement or Lyapunov solve: ~30 %
 # of the M7 replay's arm-none-eabi-g++ time, ~45 % of a float one's on the M4F
 # (docs/DECISIONS.md, "CI under 20 minutes", item 20).
-add_executable(adcs_design_gains EXCLUDE_FROM_ALL ${_tr}/design_gains.cpp)
-target_link_libraries(adcs_design_gains PRIVATE adcs_replay_host_flags)
-set_target_properties(adcs_design_gains PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
-add_custom_command(OUTPUT ${_rgen}/replay_gains_hybrid.hpp
-  COMMAND adcs_design_gains ${_rgen}/replay_gains_hybrid.hpp
-  DEPENDS adcs_design_gains
-  COMMENT "Designing seed 001's replay gains on the host (K, P)" VERBATIM)
+# A host program built with the replays' arithmetic and run at build time to write one header
+# into the generated directory (usage: program <out.hpp>).
+function(adcs_replay_generator name out comment)
+  add_executable(${name} EXCLUDE_FROM_ALL ${ARGN})
+  target_link_libraries(${name} PRIVATE adcs_replay_host_flags)
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
+  add_custom_command(OUTPUT ${_rgen}/${out} COMMAND ${name} ${_rgen}/${out} DEPENDS ${name}
+                     COMMENT "${comment}" VERBATIM)
+endfunction()
+adcs_replay_generator(adcs_design_gains replay_gains_hybrid.hpp
+                      "Designing seed 001's replay gains on the host (K, P)" ${_tr}/design_gains.cpp)
 target_include_directories(adcs_replay_host_flags INTERFACE ${_rgen})
 foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)
   add_library(adcs_replay_core_${sys} OBJECT EXCLUDE_FROM_ALL ${_tr}/replay_${sys}.cpp)
@@ -252,14 +256,9 @@ endforeach()
 # The C example's expected results (examples/c/cfs_reference.cpp), computed with the target's
 # arithmetic like the replay inputs, for the application the M7 runs (c_example_m7.elf).
 enable_language(C)  # the example's plant is C (examples/c/cubesat_plant.c)
-add_executable(adcs_c_example_reference EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/examples/c/cfs_reference.cpp
-               ${PROJECT_SOURCE_DIR}/examples/c/cubesat_plant.c)
-target_link_libraries(adcs_c_example_reference PRIVATE adcs_replay_host_flags)
-set_target_properties(adcs_c_example_reference PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${_rdir})
-add_custom_command(OUTPUT ${_rgen}/cfs_expected.h
-  COMMAND adcs_c_example_reference ${_rgen}/cfs_expected.h
-  DEPENDS adcs_c_example_reference
-  COMMENT "C example: the C++ components' results for the Cortex-M7 run" VERBATIM)
+adcs_replay_generator(adcs_c_example_reference cfs_expected.h
+                      "C example: the C++ components' results for the Cortex-M7 run"
+                      ${PROJECT_SOURCE_DIR}/examples/c/cfs_reference.cpp ${PROJECT_SOURCE_DIR}/examples/c/cubesat_plant.c)
 list(APPEND _inputs ${_rgen}/cfs_expected.h ${_rgen}/replay_gains_hybrid.hpp)
 add_custom_target(adcs_replay_inputs DEPENDS ${_inputs})
 
