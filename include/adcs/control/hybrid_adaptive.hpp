@@ -206,9 +206,9 @@ class HybridAdaptive {
   }
 
   //! Construction outcome: ok, or invalid_parameter when the poles are not finite, conjugate
-  //! pairs in the open left half-plane (or the given gains fail the checks above); Q_L is not symmetric positive definite; the nominal
-  //! geometry is invalid (VscmgGeometry: finite, J_s SPD, inertias and h_cw >= 0; it has no
-  //! default) or J_n = J_tr(0) not SPD; the steering parameters are invalid; α_F < 0, α_G < 0,
+  //! pairs in the open left half-plane (or the given gains fail the checks above); Q_L is not
+  //! symmetric positive definite; the nominal geometry is invalid (VscmgGeometry: finite, J_s
+  //! SPD, inertias and h_cw >= 0; it has no default) or J_n = J_tr(0) not SPD; the steering parameters are invalid; α_F < 0, α_G < 0,
   //! β_G <= 0, δ_G <= 0, T_c <= 0, λ_max <= 0 or any of them or H_I_n not finite. A refused law
   //! answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
