@@ -164,7 +164,8 @@ find_package(Python3 COMPONENTS Interpreter)
 if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
   add_test(NAME target_m4f_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
-                   ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step adcs_m4f_hybrid_adaptive_step)
+                   ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step adcs_m4f_hybrid_adaptive_step
+                   adcs_m4f_ppc_neural_step adcs_m4f_adaptive_tracking_step)
   add_test(NAME target_m4f_c_api_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
                    ${_m4f_c_obj} adcs_mrp_pd4f_init adcs_mrp_pd4f_step adcs_rw_alloc4f_init adcs_rw_alloc4f_step)
@@ -193,9 +194,10 @@ cmake_host_system_information(RESULT _ncores QUERY NUMBER_OF_LOGICAL_CORES)
 set(ADCS_TARGET_BUILD_JOBS ${_ncores} CACHE STRING "Parallel jobs of the nested Cortex-M7 build")
 set(ADCS_REPLAY_SYSTEMS hybrid ppc se3 dragfree attitude)
 # Float Systems, replayed on the Cortex-M4F (issue 19).
-set(ADCS_REPLAY_SYSTEMS_M4F attitude_f)
+set(ADCS_REPLAY_SYSTEMS_M4F attitude_f ppc_f)
 set(_api_attitude replay::kAttitude)
 set(_api_attitude_f replay::kAttitudeF)
+set(_api_ppc_f replay::kPpcF)
 set(_api_hybrid replay::kHybrid)
 set(_api_ppc replay::kPpc)
 set(_api_se3 replay::kSe3)
@@ -336,19 +338,27 @@ ExternalProject_Add(adcs_target_m4f
   EXCLUDE_FROM_ALL ON
   DEPENDS adcs_replay_inputs
   BUILD_BYPRODUCTS ${CMAKE_BINARY_DIR}/target-m4f/c_example_m4f.elf ${CMAKE_BINARY_DIR}/target-m4f/replay_attitude_f.elf
+                   ${CMAKE_BINARY_DIR}/target-m4f/replay_ppc_f.elf
                    ${CMAKE_BINARY_DIR}/target-m4f/replay_baseline.elf)
 add_dependencies(adcs_target_check adcs_target_m4f)
 # The float replays on the M4F: host float vs QEMU mps2-an386, and the instruction counts
-# (bench/target-costs.json, "systems_m4f"). Tolerance 1e-6: the host core is compiled with the
-# target's arithmetic (no FMA contraction, no SSE reordering), so the float results are expected
-# bit for bit (measured: identical); 1e-6 is ~16 float roundings (2^-24 ~ 6e-8), room for a
-# libm that rounds differently, far below any change of behaviour.
+# (bench/target-costs.json, "systems_m4f"). Tolerance: the host core is compiled with the
+# target's arithmetic (no FMA contraction, no SSE reordering), so what can differ is the float
+# libm (glibc's sinf/cosf/expf/logf against newlib's, an ulp apart in places), amplified by the
+# step's conditioning.
+#   attitude_f 1e-6, ~16 float roundings (2^-24 ~ 6e-8): measured bit-identical.
+#   ppc_f 1e-4: seed 002's step divides by the funnel ρ and differences ϑ̇ against ϑ̇_d, so one
+#     rounding moves the command by up to ~2e-5 of its size (the float-vs-double step bound of
+#     PpcNeuralFloat.StepMatchesDoubleOnRandomInputs, 1e-4, away from a funnel edge); measured
+#     91.6 % of the values bit-identical, max 5.2e-6 (u3).
+set(_m4f_tol_attitude_f 1e-6)
+set(_m4f_tol_ppc_f 1e-4)
 if(ADCS_QEMU)
   foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS_M4F)
     add_test(NAME target_replay_m4f_${sys}
              COMMAND ${CMAKE_COMMAND} -DMODE=compare -DNAME=${sys} -DHOST=$<TARGET_FILE:replay_${sys}_host>
                      -DELF=${CMAKE_BINARY_DIR}/target-m4f/replay_${sys}.elf -DQEMU=${ADCS_QEMU} -DMACHINE=mps2-an386
-                     -DCOMPARE=$<TARGET_FILE:adcs_replay_compare> -DSTEPS=${ADCS_REPLAY_STEPS} -DTOL=1e-6
+                     -DCOMPARE=$<TARGET_FILE:adcs_replay_compare> -DSTEPS=${ADCS_REPLAY_STEPS} -DTOL=${_m4f_tol_${sys}}
                      -DWORK=${_rdir}/m4f_${sys} -P ${_tr}/run_replay_check.cmake)
     add_test(NAME target_icount_m4f_${sys}
              COMMAND ${CMAKE_COMMAND} -DMODE=icount -DNAME=${sys} -DELF=${CMAKE_BINARY_DIR}/target-m4f/replay_${sys}.elf

@@ -36,7 +36,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYSTEMS = {
     "hybrid": "seed 001 hybrid adaptive HybridAdaptive<4, 3>: one step() (control/hybrid_adaptive.hpp)",
-    "ppc": "seed 002 PPATC PpcNeural: one step() (control/ppc_neural.hpp)",
+    "ppc": "seed 002 PPATC PpcNeural: row conversion, one step() (control/ppc_neural.hpp)",
     "se3": "seed 003 BsPdTC PrescribedTimeSe3: one 8 Hz tick = se3_desired_state + step() + "
            "saturate_then_quantize (control/prescribed_time_se3.hpp)",
     "dragfree": "seed 004 one 0.1 s sample: DragFreeEskf + 3 SaturatedEsf predict/update, DragFreeAdrc "
@@ -47,12 +47,14 @@ SYSTEMS = {
 SYSTEMS_M4F = {
     "attitude_f": "MrpPd<4, float> + RwTorqueAllocator<4, float> on the 12U cubesat, Cortex-M4F: row "
                   "conversion (double rows to float: library calls), the law's step(), the allocation's step()",
+    "ppc_f": "seed 002 PPATC PpcNeuralT<float> on the paper's flexible spacecraft, Cortex-M4F: row conversion "
+             "(double rows to float: library calls), one step() (control/ppc_neural.hpp)",
 }
 GOAL = 10000  # instructions per step (issue 7)
 # The stage that is the controller's own step() in Systems whose step() has more (the rest are
 # the desired state, quantisation, or estimators).
 CONTROLLER_STAGE = {"se3": "controller_step", "dragfree": "adrc_step", "attitude": "mrp_pd_step",
-                    "attitude_f": "mrp_pd_step"}
+                    "attitude_f": "mrp_pd_step", "ppc": "ppc_step", "ppc_f": "ppc_step"}
 QEMU_ARGS = ["-nographic", "-monitor", "none", "-serial", "none",
              "-semihosting-config", "enable=on,target=native", "-icount", "shift=0"]
 

@@ -24,6 +24,7 @@
 #include "scenarios/truth_plants.hpp"
 #include "scenarios/verdicts.hpp"
 #include "scenarios/status_counts.hpp"
+#include "sim/law_at_scalar.hpp"
 #include "sim/recorder.hpp"
 #include "sim/closed_loop.hpp"
 
@@ -55,7 +56,7 @@ struct FlexibleConfig {
   Vec3 K = Vec3::Zero(), lambda = Vec3::Zero(), tau_w = Vec3::Zero();
   Vec3 rho0_deg = Vec3::Zero(), rho_inf_deg = Vec3::Zero(), k_rho = Vec3::Zero(), delta = Vec3::Zero();
   Vec<2> window_s = Vec<2>::Zero();
-  std::string units, robust_clamp, funnel_recovery, companion, on_failure;
+  std::string units, robust_clamp, funnel_recovery, companion, on_failure, scalar;
 
   template <class F>
   void visit(F&& f) {
@@ -94,6 +95,7 @@ struct FlexibleConfig {
            "seed 002's law has no recovery (none); reopen = the library default (issue 15): re-open a "
            "violated funnel from the current error, counted");
     f.vec("window_s", window_s, Vec<2>(40.0, 100.0), "s", std::string(kB5) + ": steady-state window W_ss");
+    f.name("scalar", scalar, "double", {"double", "float"}, kScalarHelp);
     f.number("record_every", record_every, 100, "samples", "CSV decimation (in control samples)");
     if (halfgain)
       f.name("companion", companion, "run", {"run", "skip"}, "run: also simulate the nominal gains (P7, Figs. 9-11)");
@@ -292,13 +294,16 @@ class FlexibleScenario final : public Scenario {
     pp.delta = c.delta;
     pp.robust_clamp = c.robust_clamp == "on";
     pp.recovery = c.funnel_recovery == "reopen" ? FunnelRecovery::reopen : FunnelRecovery::none;
-    std::optional<PpcNeural> ppc;
-    std::optional<AdaptiveTracking> atc;
+    // The law in the scalar of `--set scalar` (issue 19) behind the loop's double interface
+    // (sim/law_at_scalar.hpp); the plant stays double under the integrator.
+    const bool single = c.scalar == "float";
+    std::optional<LawAtScalar<PpcNeuralT>> ppc;
+    std::optional<LawAtScalar<AdaptiveTrackingT>> atc;
     if (ppc_) {
-      ppc.emplace(PpcNeuralParams{g, pp});
+      ppc.emplace(LawAtScalar<PpcNeuralT>::Params{PpcNeuralParams{g, pp}, single});
       if (ppc->status() != Status::ok) throw ParamError("PPATC parameters rejected (gains, rho, delta, period)");
     } else {
-      atc.emplace(AdaptiveTrackingParams{g});
+      atc.emplace(LawAtScalar<AdaptiveTrackingT>::Params{AdaptiveTrackingParams{g}, single});
       if (atc->status() != Status::ok) throw ParamError("ATC parameters rejected (gains, period)");
     }
     // The funnel both laws are judged against (spec §B.6): branches from e(0), δ, ρ(t).
@@ -408,7 +413,8 @@ class FlexibleScenario final : public Scenario {
       if (t >= 50.0) eta_late = std::max(eta_late, eta1);
       if (t >= 50.0 && t < eta_mid) eta_late1 = std::max(eta_late1, eta1);
       if (t >= 50.0 && t >= eta_mid) eta_late2 = std::max(eta_late2, eta1);
-      const double mu = ppc_ ? ppc->mu() : atc->mu();
+      const auto mu_of = [](const auto& law) { return static_cast<double>(law.mu()); };
+      const double mu = ppc_ ? ppc->visit(mu_of) : atc->visit(mu_of);
       mu_min = std::min(mu_min, mu);
       if (capture)
         for (int i = 0; i < 3; ++i) capture->e[i].push_back(e_deg(i));
@@ -425,7 +431,8 @@ class FlexibleScenario final : public Scenario {
         for (int m = 0; m < 4; ++m) row.push_back(Plant::eta(xs, 0)(m));
         row.push_back(eta1);
         row.push_back(mu);
-        row.push_back((ppc_ ? ppc->weights() : atc->weights()).norm());
+        const auto w_norm = [](const auto& law) { return static_cast<double>(law.weights().norm()); };
+        row.push_back(ppc_ ? ppc->visit(w_norm) : atc->visit(w_norm));
         if (overlay)
           for (int i = 0; i < 3; ++i)
             row.push_back(sample < overlay->e[i].size() ? overlay->e[i][sample] : NAN);
@@ -452,7 +459,8 @@ class FlexibleScenario final : public Scenario {
                  {"err_ss_max_deg_y", err_ss(1)},
                  {"err_ss_max_deg_z", err_ss(2)},
                  {"funnel_violations", double(violations)},
-                 {"funnel_recoveries", ppc_ ? double(ppc->funnel_recoveries()) : 0.0},
+                 {"funnel_recoveries",
+                  ppc_ ? ppc->visit([](const auto& law) { return double(law.funnel_recoveries()); }) : 0.0},
                  {"zero_crossings", double(crossings)},
                  {"err_final_deg_x", e_final(0)},
                  {"err_final_deg_y", e_final(1)},

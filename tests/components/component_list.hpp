@@ -314,6 +314,16 @@ struct ComponentFixture<RwTorqueAllocator<4, float>> {
 };
 
 template <>
+struct ComponentFixture<PpcNeuralT<float>> {
+  static constexpr const char* name = "PpcNeuralf";
+  using C = PpcNeuralT<float>;
+  using D = ComponentFixture<PpcNeural>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.state.omega_BN_B(0) = kNaNf; }
+};
+
+template <>
 struct ComponentFixture<Saturation<6>> {
   static constexpr const char* name = "Saturation6";
   static Saturation<6>::Params params() { return Saturation<6>::Params{Vec6(0.5, 0.5, 0.5, 5, 5, 5)}; }
@@ -399,7 +409,7 @@ struct OutputValues {
 using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural, AdaptiveTracking, PrescribedTimeSe3, FtsmcSe3,
                      DragFreeAdrc, Pid<3>, DragFreeEskf, SaturatedEsf, RwTorqueAllocator<4>, Saturation<6>,
                      SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
-                     RwTorqueAllocator<4, float>>;
+                     RwTorqueAllocator<4, float>, PpcNeuralT<float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

@@ -1,4 +1,4 @@
-// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seed 001 compiled for a
+// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-002 compiled for a
 // single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard) with
 // -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py then walks the call
 // graph of this object from the adcs_m4f_* entry points and fails if any software-double helper
@@ -6,11 +6,16 @@
 // this FPU a single double operation is a ~60-cycle library call.
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
+#include "adcs/control/adaptive_tracking.hpp"
 #include "adcs/control/mrp_pd.hpp"
+#include "adcs/control/ppc_neural.hpp"
 
 namespace adcs {
 template class MrpPd<4, float>;
 template class RwTorqueAllocator<4, float>;
+// Seed 002: both Euler-angle tracking laws (their constructors are float too: an LLT of J).
+template class PpcNeuralT<float>;
+template class AdaptiveTrackingT<float>;
 // Seed 001: the run-time members only. Its constructor runs the design in double on purpose
 // (pole placement, Lyapunov solve: software double once at start-up); compiled to code here it
 // cost ~70 arm-none-eabi-g++ CPU-s. The whole class, constructor included, is compiled with
@@ -30,6 +35,8 @@ template void HybridAdaptive<4, 3, float>::reset() noexcept;
 using PdF = adcs::MrpPd<4, float>;
 using AllocF = adcs::RwTorqueAllocator<4, float>;
 using HybridF = adcs::HybridAdaptive<4, 3, float>;
+using PpcF = adcs::PpcNeuralT<float>;
+using AtcF = adcs::AdaptiveTrackingT<float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
 extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
@@ -39,5 +46,11 @@ extern "C" int adcs_m4f_rw_allocation_step(const AllocF* a, const AllocF::Input*
   return static_cast<int>(a->step(*in, *out));
 }
 extern "C" int adcs_m4f_hybrid_adaptive_step(HybridF* c, const HybridF::Input* in, HybridF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
+extern "C" int adcs_m4f_ppc_neural_step(PpcF* c, const PpcF::Input* in, PpcF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
+extern "C" int adcs_m4f_adaptive_tracking_step(AtcF* c, const AtcF::Input* in, AtcF::Output* out) {
   return static_cast<int>(c->step(*in, *out));
 }

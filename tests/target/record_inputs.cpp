@@ -3,13 +3,14 @@
 // input of every step as a C++ header of hex-float literals (exact): replay_inputs_<name>.hpp in
 // the build tree. Usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>
 // Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
-// (attitude and attitude_f too: record_inputs <attitude|attitude_f> <out.hpp> <steps>.)
+// (ppc_f, attitude and attitude_f too: record_inputs <ppc_f|attitude|attitude_f> <out.hpp> <steps>.)
 //
 // The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
 // scenarios offer; the plant wrappers are the scenarios' own (src/scenarios/truth_plants.hpp),
 // the drag-free truth is restated (drag_free.cpp keeps it with its noise streams):
 //   hybrid   A-REF: TP-FULL + D1 deviations + σ_d, one RK4 step per 1 ms period (integrator=rk4)
-//   ppc      flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s
+//   ppc, ppc_f  flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s; each
+//            System closes its own loop (ppc_f: the float law)
 //   se3      chaser + target on SE(3), state 1, disturbance, RK4 at h/10 (integrator=rk4)
 //   dragfree the 27-state exact ZOH truth with seeded noise (run seed 0 -> streams of seed 1)
 //   attitude, attitude_f  the cubesat of examples/cubesat_mrp_pd.cpp (RigidBodyRw<4>), 10 RK4
@@ -115,14 +116,13 @@ Rows record_hybrid(int steps) {
 
 // ------------------------------------------------------------------------------ seed 002
 
-Rows record_ppc(int steps) {
+Rows record_ppc(const replay::Api& sys, int steps) {
   using Plant = FlexibleSimPlant::Plant;
   constexpr double d2r = 3.14159265358979323846 / 180.0;
   const Plant plant(flexible_params_seed002());
   if (plant.status() != Status::ok) fail("flexible plant rejected");
   const FlexibleSimPlant sim{&plant, 0.0045, 0.0011};  // seed 002 §4: a = 0.0045 N m, n0 = 0.0011 rad/s
   const SinusoidalEulerReference ref;                   // seed 002 §4 defaults
-  const replay::Api& sys = replay::kPpc;
   if (sys.init_status() != Status::ok) fail("PPATC rejected");
   const double T = sys.period_s;
   Plant::State x = Plant::initial_state(Vec3(0.25, 0.15, -0.20) * d2r, Vec3(0.02, 0.01, -0.02) * d2r);
@@ -306,7 +306,7 @@ void write_header(const char* path, const char* name, const char* what, const Ro
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) fail("usage: record_inputs <hybrid|ppc|se3|dragfree|attitude|attitude_f> <out.hpp> <steps>");
+  if (argc != 4) fail("usage: record_inputs <hybrid|ppc|ppc_f|se3|dragfree|attitude|attitude_f> <out.hpp> <steps>");
   const std::string name = argv[1];
   const int steps = std::atoi(argv[3]);
   if (steps < 1) fail("steps must be >= 1");
@@ -317,8 +317,11 @@ int main(int argc, char** argv) {
       rows = record_hybrid(steps);
       what = "seed 001 A-REF closed loop, T_c = 1 ms";
     } else if (name == "ppc") {
-      rows = record_ppc(steps);
+      rows = record_ppc(replay::kPpc, steps);
       what = "seed 002 flexible-ppc closed loop, T = 1e-4 s";
+    } else if (name == "ppc_f") {
+      rows = record_ppc(replay::kPpcF, steps);
+      what = "seed 002 flexible-ppc closed loop (float law), T = 1e-4 s";
     } else if (name == "se3") {
       rows = record_se3(steps);
       what = "seed 003 se3-ptc closed loop (state 1), 8 Hz";

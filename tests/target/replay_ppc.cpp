@@ -5,7 +5,7 @@
 #include "replay_runtime.hpp"
 
 namespace {
-replay::PpcSystem g_system;  // static storage: its bytes show in the ELF's .bss
+replay::PpcSystem<double> g_system;  // static storage: its bytes show in the ELF's .bss
 }
 
-const replay::Api replay::kPpc = replay::ApiOf<replay::PpcSystem, &g_system>::make();
+const replay::Api replay::kPpc = replay::ApiOf<replay::PpcSystem<double>, &g_system>::make();

@@ -4,16 +4,24 @@
 // T = 1e-4 s), as flexible-ppc in src/scenarios/flexible_ppc.cpp. One step() = one
 // PpcNeural::step() with the reference sample as input (BM_FlexiblePPC_Step also samples the
 // reference; here it is recorded so that its sin/cos are not part of the step).
+// S = double is the Cortex-M7 System "ppc", S = float the Cortex-M4F System "ppc_f" (issue 19:
+// PpcNeuralT<float> on a single-precision FPU; its parameters are the double ones rounded once,
+// and each row is converted to float before the step, as a flight computer's sensor interface
+// would hand it over).
+#include <type_traits>
+
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"  // seed002_tracking_gains()
 #include "replay_system.hpp"
 
 namespace replay {
 
+template <class S>
 class PpcSystem {
  public:
-  using Controller = adcs::PpcNeural;
-  static constexpr const char* kName = "ppc";
+  using Controller = adcs::PpcNeuralT<S>;
+  using Vec3S = adcs::Vec<3, S>;
+  static constexpr const char* kName = std::is_same_v<S, float> ? "ppc_f" : "ppc";
   // Row: t, ϑ (3), ω (3), ϑ_d (3), ϑ̇_d (3), ϑ̈_d (3).
   static constexpr int kInputWidth = 16;
   static constexpr int kCommandSize = 3, kParts = 1;
@@ -24,6 +32,8 @@ class PpcSystem {
   // u 14 .. 38 N m (the initial transient), μ̂ 4.7e-3, Ŵ entries 7e-12 .. 8e-6 (one scale for
   // all, the smallest row's).
   static constexpr double kTorque = 1.0, kMu = 1e-3, kW = 1e-12;
+  static constexpr int kCostStages = 2;
+  static constexpr const char* kStageNames[kCostStages] = {"inputs", "ppc_step"};
   static constexpr Column kColumns[] = {
       {"status", 0.0}, {"branch1", 0.0}, {"branch2", 0.0}, {"branch3", 0.0}, {"u1", kTorque},
       {"u2", kTorque}, {"u3", kTorque},  {"mu", kMu},      {"W11", kW},      {"W21", kW},
@@ -32,44 +42,49 @@ class PpcSystem {
       {"W62", kW},     {"W72", kW},      {"W13", kW},      {"W23", kW},      {"W33", kW},
       {"W43", kW},     {"W53", kW},      {"W63", kW},      {"W73", kW}};
 
-  static Controller::Params params() noexcept {
-    Controller::Params p{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
+  static typename Controller::Params params() noexcept {
+    adcs::PpcNeuralParams p{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
     p.gains.period_s = kPeriod;
-    return p;
+    return p.template cast<S>();
   }
 
   PpcSystem() noexcept : ctrl_(params()) {}
   adcs::Status init_status() const noexcept { return ctrl_.status(); }
 
-  void step(const double* row) noexcept {
-    Controller::Input in;
-    in.t_s = row[0];
-    in.state.theta_BN_rad = adcs::Vec3::Map(row + 1);
-    in.state.omega_BN_B = adcs::Vec3::Map(row + 4);
-    in.reference.angles = adcs::Vec3::Map(row + 7);
-    in.reference.angles_dot = adcs::Vec3::Map(row + 10);
-    in.reference.angles_ddot = adcs::Vec3::Map(row + 13);
-    status_ = ctrl_.step(in, cmd_);
+  void step(const double* row) noexcept { step_stages(kCostStages, row); }
+  //! The first n stages of step() (cost mode): the row into the law's Input (in float, 16
+  //! double-to-float conversions: library calls on the M4F, the driver's cost, not the law's),
+  //! then the law's step(). The Input is a member, so that neither stage alone is dead code.
+  void step_stages(int n, const double* row) noexcept {
+    in_.t_s = static_cast<S>(row[0]);
+    in_.state.theta_BN_rad = adcs::Vec3::Map(row + 1).cast<S>();
+    in_.state.omega_BN_B = adcs::Vec3::Map(row + 4).cast<S>();
+    in_.reference.angles = adcs::Vec3::Map(row + 7).cast<S>();
+    in_.reference.angles_dot = adcs::Vec3::Map(row + 10).cast<S>();
+    in_.reference.angles_ddot = adcs::Vec3::Map(row + 13).cast<S>();
+    if (n < 2) return;
+    status_ = ctrl_.step(in_, cmd_);
   }
 
   void step_part(int, const double* row) noexcept { step(row); }
   void command(double* u) const noexcept {
-    for (int i = 0; i < 3; ++i) u[i] = cmd_.torque_B_Nm(i);
+    for (int i = 0; i < 3; ++i) u[i] = static_cast<double>(cmd_.torque_B_Nm(i));
   }
 
   void outputs(double* v) const noexcept {
     *v++ = static_cast<double>(status_);
     for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(static_cast<int>(ctrl_.branch(i)));
-    for (int i = 0; i < 3; ++i) *v++ = cmd_.torque_B_Nm(i);
-    *v++ = ctrl_.mu();
-    const adcs::Mat<7, 3>& W = ctrl_.weights();
+    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(cmd_.torque_B_Nm(i));
+    *v++ = static_cast<double>(ctrl_.mu());
+    const adcs::Mat<7, 3, S>& W = ctrl_.weights();
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 7; ++i) *v++ = W(i, j);
+      for (int i = 0; i < 7; ++i) *v++ = static_cast<double>(W(i, j));
   }
 
  private:
   Controller ctrl_;
-  Controller::Output cmd_{};
+  typename Controller::Input in_{};
+  typename Controller::Output cmd_{};
   adcs::Status status_ = adcs::Status::ok;
 };
 

@@ -61,5 +61,6 @@ extern const Api kDragFree;  // seed 004
 extern const Api kBaseline;  // empty System (target size baseline)
 extern const Api kAttitude;   // MrpPd<4> + RwTorqueAllocator<4>, double (Cortex-M7)
 extern const Api kAttitudeF;  // the same in float (Cortex-M4F; issue 19)
+extern const Api kPpcF;       // seed 002 in float (Cortex-M4F; issue 19)
 
 }  // namespace replay

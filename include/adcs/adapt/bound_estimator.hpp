@@ -8,12 +8,15 @@
 
 #include <Eigen/Core>
 
+#include "adcs/core/types.hpp"  // identity_t
+
 namespace adcs {
 
-inline double bound_estimate_step(double mu, double s_norm, double tau_mu, double gamma,
-                                  double T) noexcept {
-  if (gamma > 0.0) {
-    const double x = tau_mu * gamma * T;
+template <class S>
+inline S bound_estimate_step(S mu, identity_t<S> s_norm, identity_t<S> tau_mu, identity_t<S> gamma,
+                             identity_t<S> T) noexcept {
+  if (gamma > S(0)) {
+    const S x = tau_mu * gamma * T;
     return std::exp(-x) * mu + (-std::expm1(-x) / gamma) * s_norm;  // expm1: no cancellation
   }
   return mu + tau_mu * T * s_norm;
@@ -21,8 +24,8 @@ inline double bound_estimate_step(double mu, double s_norm, double tau_mu, doubl
 
 //! The robust term μ̂² s/(μ̂‖s‖ + σ) of seed 002 eq. (12); its denominator is ≥ σ > 0 for μ̂ ≥ 0.
 template <class Derived>
-typename Derived::PlainObject bound_robust_term(double mu, const Eigen::MatrixBase<Derived>& s,
-                                                double sigma) noexcept {
+typename Derived::PlainObject bound_robust_term(typename Derived::Scalar mu, const Eigen::MatrixBase<Derived>& s,
+                                                typename Derived::Scalar sigma) noexcept {
   return (mu * mu / (mu * s.norm() + sigma)) * s;
 }
 

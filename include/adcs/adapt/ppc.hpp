@@ -21,6 +21,8 @@
 // law can continue after a disturbance it was not designed for; the law counts and reports it.
 #include <array>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
@@ -28,59 +30,74 @@
 namespace adcs {
 
 //! ρ(t) = (ρ0 − ρ∞) e^{−kt} + ρ∞ with ρ0 > ρ∞ > 0, k > 0 (units of the error; k in 1/s).
-struct PerformanceFunction {
-  double rho0 = 1.0;     //!< [error units] ρ(0)
-  double rho_inf = 0.1;  //!< [error units] lim ρ(t)
-  double k = 1.0;        //!< [1/s] decay rate
+template <class S = double>
+struct PerformanceFunctionT {
+  S rho0 = S(1.0);     //!< [error units] ρ(0)
+  S rho_inf = S(0.1);  //!< [error units] lim ρ(t)
+  S k = S(1.0);        //!< [1/s] decay rate
+  template <class T>
+  PerformanceFunctionT<T> cast() const noexcept {
+    return {narrow_scalar<T>(rho0), narrow_scalar<T>(rho_inf), narrow_scalar<T>(k)};
+  }
 };
+using PerformanceFunction = PerformanceFunctionT<double>;
 
-struct PerformanceSample {
-  double rho = 0.0, rho_dot = 0.0, rho_ddot = 0.0;  //!< ρ, ρ̇, ρ̈ at one time
+template <class S = double>
+struct PerformanceSampleT {
+  S rho = S(0), rho_dot = S(0), rho_ddot = S(0);  //!< ρ, ρ̇, ρ̈ at one time
 };
+using PerformanceSample = PerformanceSampleT<double>;
 
-inline bool valid(const PerformanceFunction& f) noexcept {
+template <class S>
+inline bool valid(const PerformanceFunctionT<S>& f) noexcept {
   return std::isfinite(f.rho0) && std::isfinite(f.rho_inf) && std::isfinite(f.k) &&
-         f.rho_inf > 0.0 && f.rho0 > f.rho_inf && f.k > 0.0;
+         f.rho_inf > S(0) && f.rho0 > f.rho_inf && f.k > S(0);
 }
 
 //! ρ, ρ̇ = −k(ρ0 − ρ∞)e^{−kt}, ρ̈ = k²(ρ0 − ρ∞)e^{−kt}.   seed 002 eq. (5), spec §B.3 step 2
-inline PerformanceSample evaluate(const PerformanceFunction& f, double t) noexcept {
-  const double a = (f.rho0 - f.rho_inf) * std::exp(-f.k * t);
-  return PerformanceSample{a + f.rho_inf, -f.k * a, f.k * f.k * a};
+template <class S>
+inline PerformanceSampleT<S> evaluate(const PerformanceFunctionT<S>& f, identity_t<S> t) noexcept {
+  const S a = (f.rho0 - f.rho_inf) * std::exp(-f.k * t);
+  return PerformanceSampleT<S>{a + f.rho_inf, -f.k * a, f.k * f.k * a};
 }
 
 //! Which side of zero the error starts (and, with δ = 0, stays) on.   seed 002 eq. (6)
 enum class PpcBranch : signed char { positive = 1, negative = -1 };
 
 //! Forward map z = S(ε) of seed 002 eq. (7) (for tests and plots).
-inline double ppc_S(double eps, PpcBranch b, double delta) noexcept {
-  const double ep = std::exp(eps), em = std::exp(-eps);
+template <class S>
+inline S ppc_S(S eps, PpcBranch b, identity_t<S> delta) noexcept {
+  const S ep = std::exp(eps), em = std::exp(-eps);
   return b == PpcBranch::positive ? (ep - delta * em) / (ep + em) : (delta * ep - em) / (ep + em);
 }
 
 //! Signed distance of z to the nearer edge of the open interval of seed 002 eq. (6): > 0 inside.
-inline double ppc_margin(double z, PpcBranch b, double delta) noexcept {
-  return b == PpcBranch::positive ? std::fmin(z + delta, 1.0 - z) : std::fmin(z + 1.0, delta - z);
+template <class S>
+inline S ppc_margin(S z, PpcBranch b, identity_t<S> delta) noexcept {
+  return b == PpcBranch::positive ? std::fmin(z + delta, S(1) - z) : std::fmin(z + S(1), delta - z);
 }
 
-struct PpcInverse {
-  double eps = 0.0;     //!< [-] ε = S⁻¹(z)                    seed 002 eq. (9)
-  double eps_z = 0.0;   //!< [-] ∂ε/∂z (> 0)                   spec §B.3 step 5
-  double eps_zz = 0.0;  //!< [-] ∂²ε/∂z²
+template <class S = double>
+struct PpcInverseT {
+  S eps = S(0);     //!< [-] ε = S⁻¹(z)                    seed 002 eq. (9)
+  S eps_z = S(0);   //!< [-] ∂ε/∂z (> 0)                   spec §B.3 step 5
+  S eps_zz = S(0);  //!< [-] ∂²ε/∂z²
 };
+using PpcInverse = PpcInverseT<double>;
 
 //! ε, ε_z, ε_zz for z strictly inside the interval. out_of_range (out untouched) otherwise,
 //! non_finite_input for NaN z.   seed 002 eq. (9), spec §B.3 steps 4-5
-inline Status ppc_S_inverse(double z, PpcBranch b, double delta, PpcInverse& out) noexcept {
+template <class S>
+inline Status ppc_S_inverse(S z, PpcBranch b, identity_t<S> delta, PpcInverseT<S>& out) noexcept {
   if (!std::isfinite(z)) return Status::non_finite_input;
-  if (!(ppc_margin(z, b, delta) > 0.0)) return Status::out_of_range;
+  if (!(ppc_margin(z, b, delta) > S(0))) return Status::out_of_range;
   // a = distance to the lower edge, c = distance to the upper edge (both > 0 here).
-  const double a = b == PpcBranch::positive ? z + delta : z + 1.0;
-  const double c = b == PpcBranch::positive ? 1.0 - z : delta - z;
-  const double eps = 0.5 * std::log(a / c);
-  const double eps_z = 0.5 * (1.0 / a + 1.0 / c);
-  const double eps_zz = 0.5 * (1.0 / (c * c) - 1.0 / (a * a));
-  // Within ~1e-154 of an edge the squares overflow: that is the edge, numerically.
+  const S a = b == PpcBranch::positive ? z + delta : z + S(1);
+  const S c = b == PpcBranch::positive ? S(1) - z : delta - z;
+  const S eps = S(0.5) * std::log(a / c);
+  const S eps_z = S(0.5) * (S(1) / a + S(1) / c);
+  const S eps_zz = S(0.5) * (S(1) / (c * c) - S(1) / (a * a));
+  // Within ~1e-154 (float: ~1e-19) of an edge the squares overflow: that is the edge, numerically.
   if (!std::isfinite(eps) || !std::isfinite(eps_z) || !std::isfinite(eps_zz)) return Status::out_of_range;
   out.eps = eps;
   out.eps_z = eps_z;
@@ -94,39 +111,49 @@ enum class FunnelRecovery : unsigned char {
   reopen,  //!< PrescribedPerformance::reopen() from the current error, counted (the default)
 };
 
-template <int K>
+template <int K, class S = double>
 struct PpcParams {
-  std::array<PerformanceFunction, K> rho{};  //!< one performance function per channel
-  Vec<K> delta = Vec<K>::Zero();             //!< [-] overshoot parameters δ_i ∈ [0, 1]
+  std::array<PerformanceFunctionT<S>, K> rho{};  //!< one performance function per channel
+  Vec<K, S> delta = Vec<K, S>::Zero();           //!< [-] overshoot parameters δ_i ∈ [0, 1]
   bool robust_clamp = false;  //!< clamp z at a funnel edge (flagged) instead of refusing
   FunnelRecovery recovery = FunnelRecovery::reopen;  //!< after a violation (ours, issue 15)
+  //! The same parameters in another scalar (each value rounded once; validated by the user).
+  template <class T>
+  PpcParams<K, T> cast() const noexcept {
+    PpcParams<K, T> q;
+    for (int i = 0; i < K; ++i) q.rho[i] = rho[i].template cast<T>();
+    q.delta = scalar_cast<T>(delta);
+    q.robust_clamp = robust_clamp;
+    q.recovery = recovery;
+    return q;
+  }
 };
 
 //! Everything a PPC law needs from one error sample (spec §B.3 steps 2-7), per channel.
-template <int K>
+template <int K, class S = double>
 struct PpcSample {
-  Vec<K> rho = Vec<K>::Zero(), rho_dot = Vec<K>::Zero(), rho_ddot = Vec<K>::Zero();
-  Vec<K> z = Vec<K>::Zero();             //!< [-] e/ρ
-  Vec<K> eps = Vec<K>::Zero();           //!< [-] transformed error ε
-  Vec<K> eps_dot = Vec<K>::Zero();       //!< [1/s] ε̇ = r q
-  Vec<K> r = Vec<K>::Zero();             //!< [1/error] ε_z/ρ
-  Vec<K> r_dot = Vec<K>::Zero();         //!< [1/(error s)] ṙ
-  Vec<K> q = Vec<K>::Zero();             //!< [error/s] ė − e ρ̇/ρ
-  Vec<K> q_dot_offset = Vec<K>::Zero();  //!< [error/s²] q̇ − ë = −(ėρ̇ρ + eρ̈ρ − eρ̇²)/ρ²
-  double margin_min = 0.0;               //!< [-] min over channels of ppc_margin(z) (before any clamp)
+  Vec<K, S> rho = Vec<K, S>::Zero(), rho_dot = Vec<K, S>::Zero(), rho_ddot = Vec<K, S>::Zero();
+  Vec<K, S> z = Vec<K, S>::Zero();             //!< [-] e/ρ
+  Vec<K, S> eps = Vec<K, S>::Zero();           //!< [-] transformed error ε
+  Vec<K, S> eps_dot = Vec<K, S>::Zero();       //!< [1/s] ε̇ = r q
+  Vec<K, S> r = Vec<K, S>::Zero();             //!< [1/error] ε_z/ρ
+  Vec<K, S> r_dot = Vec<K, S>::Zero();         //!< [1/(error s)] ṙ
+  Vec<K, S> q = Vec<K, S>::Zero();             //!< [error/s] ė − e ρ̇/ρ
+  Vec<K, S> q_dot_offset = Vec<K, S>::Zero();  //!< [error/s²] q̇ − ë = −(ėρ̇ρ + eρ̈ρ − eρ̇²)/ρ²
+  S margin_min = S(0);                         //!< [-] min over channels of ppc_margin(z) (before any clamp)
 };
 
 //! Error transform with the branches fixed from e(0) (spec §B.3 "fixed at t = 0").
-template <int K>
+template <int K, class S = double>
 class PrescribedPerformance {
  public:
-  using Params = PpcParams<K>;
-  using Sample = PpcSample<K>;
+  using Params = PpcParams<K, S>;
+  using Sample = PpcSample<K, S>;
 
   explicit PrescribedPerformance(const Params& p) noexcept : p_(p) {
     bool ok = true;
     for (int i = 0; i < K; ++i)
-      ok = ok && valid(p_.rho[i]) && std::isfinite(p_.delta(i)) && p_.delta(i) >= 0.0 && p_.delta(i) <= 1.0;
+      ok = ok && valid(p_.rho[i]) && std::isfinite(p_.delta(i)) && p_.delta(i) >= S(0) && p_.delta(i) <= S(1);
     ok = ok && (p_.recovery == FunnelRecovery::none || p_.recovery == FunnelRecovery::reopen);
     status_ = ok ? Status::ok : Status::invalid_parameter;
     branch_.fill(PpcBranch::positive);
@@ -138,22 +165,22 @@ class PrescribedPerformance {
   PpcBranch branch(int i) const noexcept { return branch_[i]; }
   //! Channel i's performance function now in force and the time [s] it started (ρ0 and 0 until
   //! the channel is re-opened).
-  const PerformanceFunction& active(int i) const noexcept { return rho_[i]; }
-  double start_time(int i) const noexcept { return t0_[i]; }
+  const PerformanceFunctionT<S>& active(int i) const noexcept { return rho_[i]; }
+  S start_time(int i) const noexcept { return t0_[i]; }
   //! ρ_i(t) of the funnel in force (what transform() divides by).
-  double rho(int i, double t) const noexcept { return evaluate(rho_[i], t - t0_[i]).rho; }
+  S rho(int i, S t) const noexcept { return evaluate(rho_[i], t - t0_[i]).rho; }
 
   //! Fixes b_i = + if e_i(0) ≥ 0, else − (spec §B.3), and checks that e(0) is inside the
   //! funnel: out_of_range (branches still set) if some |z_i(0)| is on or beyond its edge.
   //! Restores the configured performance functions, started at t = 0.
-  [[nodiscard]] Status init(const Vec<K>& e0) noexcept {
+  [[nodiscard]] Status init(const Vec<K, S>& e0) noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(e0)) return Status::non_finite_input;
     restart();
     bool inside = true;
     for (int i = 0; i < K; ++i) {
-      branch_[i] = e0(i) >= 0.0 ? PpcBranch::positive : PpcBranch::negative;
-      inside = inside && ppc_margin(e0(i) / p_.rho[i].rho0, branch_[i], p_.delta(i)) > 0.0;
+      branch_[i] = e0(i) >= S(0) ? PpcBranch::positive : PpcBranch::negative;
+      inside = inside && ppc_margin(e0(i) / p_.rho[i].rho0, branch_[i], p_.delta(i)) > S(0);
     }
     return inside ? Status::ok : Status::out_of_range;
   }
@@ -161,28 +188,28 @@ class PrescribedPerformance {
   //! Steps 2-7 at time t [s] for error e and its rate ė. ok; constraint_violated (robust mode:
   //! some z clamped, result finite); out_of_range (some z outside, `out` untouched);
   //! non_finite_input (`out` untouched).
-  [[nodiscard]] Status transform(double t, const Vec<K>& e, const Vec<K>& e_dot, Sample& out) const noexcept {
+  [[nodiscard]] Status transform(S t, const Vec<K, S>& e, const Vec<K, S>& e_dot, Sample& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!std::isfinite(t) || !all_finite(e) || !all_finite(e_dot)) return Status::non_finite_input;
     Sample s;
     bool clamped = false;
-    s.margin_min = INFINITY;
+    s.margin_min = std::numeric_limits<S>::infinity();
     for (int i = 0; i < K; ++i) {
-      const PerformanceSample f = evaluate(rho_[i], t - t0_[i]);              // step 2
-      const double rho = f.rho, rd = f.rho_dot, rdd = f.rho_ddot;
-      double z = e(i) / rho;                                                   // step 3
-      const double margin = ppc_margin(z, branch_[i], p_.delta(i));
+      const PerformanceSampleT<S> f = evaluate(rho_[i], t - t0_[i]);              // step 2
+      const S rho = f.rho, rd = f.rho_dot, rdd = f.rho_ddot;
+      S z = e(i) / rho;                                                   // step 3
+      const S margin = ppc_margin(z, branch_[i], p_.delta(i));
       s.margin_min = std::fmin(s.margin_min, margin);
-      if (!(margin > 0.0)) {
+      if (!(margin > S(0))) {
         if (!p_.robust_clamp) return Status::out_of_range;
-        const double lo = branch_[i] == PpcBranch::positive ? -p_.delta(i) : -1.0;
-        const double hi = branch_[i] == PpcBranch::positive ? 1.0 : p_.delta(i);
+        const S lo = branch_[i] == PpcBranch::positive ? -p_.delta(i) : S(-1);
+        const S hi = branch_[i] == PpcBranch::positive ? S(1) : p_.delta(i);
         z = std::fmin(std::fmax(z, lo + kClampMargin), hi - kClampMargin);
         clamped = true;
       }
-      PpcInverse inv;
+      PpcInverseT<S> inv;
       if (ppc_S_inverse(z, branch_[i], p_.delta(i), inv) != Status::ok) return Status::out_of_range;
-      const double z_dot = (e_dot(i) - z * rd) / rho;                           // step 6
+      const S z_dot = (e_dot(i) - z * rd) / rho;                           // step 6
       s.rho(i) = rho;
       s.rho_dot(i) = rd;
       s.rho_ddot(i) = rdd;
@@ -210,22 +237,22 @@ class PrescribedPerformance {
   //! their funnel. `reopened` = number of channels re-opened (0: nothing was violated).
   //! ok; non_finite_input; out_of_range if a re-opened channel is still not strictly inside
   //! (e_i = 0 with δ_i = 0, on no branch's interval) or ρ0' overflows. Nothing changes unless ok.
-  [[nodiscard]] Status reopen(double t, const Vec<K>& e, int& reopened) noexcept {
+  [[nodiscard]] Status reopen(S t, const Vec<K, S>& e, int& reopened) noexcept {
     reopened = 0;
     if (status_ != Status::ok) return status_;
     if (!std::isfinite(t) || !all_finite(e)) return Status::non_finite_input;
-    std::array<PerformanceFunction, K> rho = rho_;
-    std::array<double, K> t0 = t0_;
+    std::array<PerformanceFunctionT<S>, K> rho = rho_;
+    std::array<S, K> t0 = t0_;
     std::array<PpcBranch, K> branch = branch_;
     int n = 0;
     for (int i = 0; i < K; ++i) {
-      const double rho_now = this->rho(i, t);
-      if (ppc_margin(e(i) / rho_now, branch[i], p_.delta(i)) > 0.0) continue;
-      const PerformanceFunction& f = rho_[i];
-      const double rho0 = std::fmax(std::fmax(std::fabs(e(i)) / kReopenZ, rho_now), 2.0 * f.rho_inf);
-      const PerformanceFunction g{rho0, f.rho_inf, f.k};
-      branch[i] = e(i) >= 0.0 ? PpcBranch::positive : PpcBranch::negative;
-      if (!valid(g) || !(ppc_margin(e(i) / rho0, branch[i], p_.delta(i)) > 0.0)) return Status::out_of_range;
+      const S rho_now = this->rho(i, t);
+      if (ppc_margin(e(i) / rho_now, branch[i], p_.delta(i)) > S(0)) continue;
+      const PerformanceFunctionT<S>& f = rho_[i];
+      const S rho0 = std::fmax(std::fmax(std::fabs(e(i)) / kReopenZ, rho_now), S(2) * f.rho_inf);
+      const PerformanceFunctionT<S> g{rho0, f.rho_inf, f.k};
+      branch[i] = e(i) >= S(0) ? PpcBranch::positive : PpcBranch::negative;
+      if (!valid(g) || !(ppc_margin(e(i) / rho0, branch[i], p_.delta(i)) > S(0))) return Status::out_of_range;
       rho[i] = g;
       t0[i] = t;
       ++n;
@@ -237,20 +264,23 @@ class PrescribedPerformance {
     return Status::ok;
   }
 
-  //! Distance kept from a funnel edge by the robust clamp (spec §B.3 step 3).
-  static constexpr double kClampMargin = 1e-12;
+  //! Distance kept from a funnel edge by the robust clamp (spec §B.3 step 3): 1e-12 in double
+  //! (~4500 rounding units of z ~ 1); in float 1e-12 is below the spacing of z near 1 (6e-8),
+  //! so the clamp would land on the edge itself: 1e-6 (~8 units, ε = S⁻¹(z) ≈ ±7.3 there
+  //! against ±14 in double). Ours (issue 19), not the paper's.
+  static constexpr S kClampMargin = std::is_same_v<S, double> ? S(1e-12) : S(1e-6);
   //! |z| of a re-opened channel's error at the re-opening (ours): mid-way to the edge.
-  static constexpr double kReopenZ = 0.5;
+  static constexpr S kReopenZ = S(0.5);
 
  private:
   void restart() noexcept {
     rho_ = p_.rho;
-    t0_.fill(0.0);
+    t0_.fill(S(0));
   }
 
   Params p_;
-  std::array<PerformanceFunction, K> rho_{};  //!< in force: p_.rho until a channel is re-opened
-  std::array<double, K> t0_{};                //!< [s] when each channel's function started
+  std::array<PerformanceFunctionT<S>, K> rho_{};  //!< in force: p_.rho until a channel is re-opened
+  std::array<S, K> t0_{};                   //!< [s] when each channel's function started
   std::array<PpcBranch, K> branch_{};
   Status status_ = Status::ok;
 };

@@ -17,24 +17,29 @@ namespace adcs {
 
 //! The gains default to seed 002 Table 2; the layer has no default (RbfLayerParams: refused
 //! until set; seed002_compensator() in control/euler_tracking_common.hpp is the paper's).
-template <int NI, int NH, int NO>
+template <int NI, int NH, int NO, class S = double>
 struct RbfCompensatorParams {
-  RbfLayerParams<NI, NH> layer{};      //!< centres c_j and widths b_j (units of x); no default
-  Vec<NO> tau_w = Vec<NO>::Constant(0.5);  //!< [-] τ_wi, seed 002 Table 2
-  double tau_mu = 0.5;                 //!< [-] τ_μ, seed 002 Table 2
-  double beta = 0.01;                  //!< [-] weight leakage β, seed 002 Table 2
-  double gamma = 0.01;                 //!< [-] bound leakage γ, seed 002 Table 2
-  double sigma = 0.01;                 //!< [-] robust-term constant σ > 0, seed 002 Table 2
+  RbfLayerParams<NI, NH, S> layer{};       //!< centres c_j and widths b_j (units of x); no default
+  Vec<NO, S> tau_w = Vec<NO, S>::Constant(S(0.5));  //!< [-] τ_wi, seed 002 Table 2
+  S tau_mu = S(0.5);                   //!< [-] τ_μ, seed 002 Table 2
+  S beta = S(0.01);                    //!< [-] weight leakage β, seed 002 Table 2
+  S gamma = S(0.01);                   //!< [-] bound leakage γ, seed 002 Table 2
+  S sigma = S(0.01);                   //!< [-] robust-term constant σ > 0, seed 002 Table 2
+  template <class T>
+  RbfCompensatorParams<NI, NH, NO, T> cast() const noexcept {
+    return {layer.template cast<T>(), scalar_cast<T>(tau_w), narrow_scalar<T>(tau_mu),
+            narrow_scalar<T>(beta),   narrow_scalar<T>(gamma), narrow_scalar<T>(sigma)};
+  }
 };
 
-template <int NI, int NH, int NO>
+template <int NI, int NH, int NO, class S = double>
 class RbfCompensator {
  public:
-  using Params = RbfCompensatorParams<NI, NH, NO>;
+  using Params = RbfCompensatorParams<NI, NH, NO, S>;
   struct Output {
-    Vec<NH> h = Vec<NH>::Zero();        //!< RBF activations
-    Vec<NO> D_hat = Vec<NO>::Zero();    //!< Ŵᵀ h
-    Vec<NO> robust = Vec<NO>::Zero();   //!< μ̂² s/(μ̂‖s‖ + σ)
+    Vec<NH, S> h = Vec<NH, S>::Zero();        //!< RBF activations
+    Vec<NO, S> D_hat = Vec<NO, S>::Zero();    //!< Ŵᵀ h
+    Vec<NO, S> robust = Vec<NO, S>::Zero();   //!< μ̂² s/(μ̂‖s‖ + σ)
   };
 
   explicit RbfCompensator(const Params& p) noexcept : p_(p), layer_(p.layer) {
@@ -50,12 +55,12 @@ class RbfCompensator {
   //! Ŵ(0) = 0, μ̂(0) = 0 (spec §B.5 assumption).
   void reset() noexcept {
     W_.setZero();
-    mu_ = 0.0;
+    mu_ = S(0);
   }
 
   //! D̂ and the robust term for NN input x and sliding variable s (both finite: caller checks).
   //! Zero when refused (status() != ok): no compensation from invalid gains.
-  Output evaluate(const Vec<NI>& x, const Vec<NO>& s) const noexcept {
+  Output evaluate(const Vec<NI, S>& x, const Vec<NO, S>& s) const noexcept {
     Output o;
     if (status_ != Status::ok) return o;
     o.h = layer_.activations(x);
@@ -66,36 +71,36 @@ class RbfCompensator {
 
   //! Next estimates after one period T with s and h held; committed by commit(). A refused
   //! compensator proposes its current (initial) estimates.
-  void propose(const Output& o, const Vec<NO>& s, double T, Mat<NH, NO>& W_next, double& mu_next) const noexcept {
+  void propose(const Output& o, const Vec<NO, S>& s, S T, Mat<NH, NO, S>& W_next, S& mu_next) const noexcept {
     if (status_ != Status::ok) {
       W_next = W_;
       mu_next = mu_;
       return;
     }
-    W_next = rbf_weight_step<NH, NO>(W_, o.h, s, p_.tau_w, p_.beta, T);   // seed 002 eq. (13)
-    mu_next = bound_estimate_step(mu_, s.norm(), p_.tau_mu, p_.gamma, T);  // seed 002 eq. (14)
+    W_next = rbf_weight_step<NH, NO, S>(W_, o.h, s, p_.tau_w, p_.beta, T);   // seed 002 eq. (13)
+    mu_next = bound_estimate_step<S>(mu_, s.norm(), p_.tau_mu, p_.gamma, T);  // seed 002 eq. (14)
   }
-  void commit(const Mat<NH, NO>& W_next, double mu_next) noexcept {
+  void commit(const Mat<NH, NO, S>& W_next, S mu_next) noexcept {
     W_ = W_next;
     mu_ = mu_next;
   }
 
   //! Warm start / oracle tests. Rejects non-finite values and μ̂ < 0 (state untouched).
-  [[nodiscard]] Status set_state(const Mat<NH, NO>& W, double mu) noexcept {
+  [[nodiscard]] Status set_state(const Mat<NH, NO, S>& W, S mu) noexcept {
     if (!all_finite(W) || !std::isfinite(mu)) return Status::non_finite_input;
-    if (mu < 0.0) return Status::out_of_range;
+    if (mu < S(0)) return Status::out_of_range;
     W_ = W;
     mu_ = mu;
     return Status::ok;
   }
-  const Mat<NH, NO>& weights() const noexcept { return W_; }
-  double mu() const noexcept { return mu_; }
+  const Mat<NH, NO, S>& weights() const noexcept { return W_; }
+  S mu() const noexcept { return mu_; }
 
  private:
   Params p_;
-  RbfLayer<NI, NH> layer_;
-  Mat<NH, NO> W_ = Mat<NH, NO>::Zero();
-  double mu_ = 0.0;
+  RbfLayer<NI, NH, S> layer_;
+  Mat<NH, NO, S> W_ = Mat<NH, NO, S>::Zero();
+  S mu_ = S(0);
   Status status_ = Status::ok;
 };
 

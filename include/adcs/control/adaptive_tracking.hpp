@@ -12,27 +12,38 @@
 
 namespace adcs {
 
-struct AdaptiveTrackingParams {
-  EulerTrackingGains gains{};  //!< J, λ, K, RBF compensator, units, period (seed 002 Table 2)
+template <class S = double>
+struct AdaptiveTrackingParamsT {
+  EulerTrackingGainsT<S> gains{};  //!< J, λ, K, RBF compensator, units, period (seed 002 Table 2)
+  template <class T>
+  AdaptiveTrackingParamsT<T> cast() const noexcept {
+    return {gains.template cast<T>()};
+  }
 };
+using AdaptiveTrackingParams = AdaptiveTrackingParamsT<double>;
 
-struct AdaptiveTrackingDiagnostics {
-  Vec3 s = Vec3::Zero();       //!< [law units/s] s_e = λe + ė
-  Vec3 D_hat = Vec3::Zero();   //!< [law units/s²] Ŵᵀh
-  Vec3 robust = Vec3::Zero();  //!< [law units/s²] μ̂²s/(μ̂‖s‖ + σ)
-  Vec3 e = Vec3::Zero();       //!< [rad] ϑ − ϑ_d
+template <class S = double>
+struct AdaptiveTrackingDiagnosticsT {
+  Vec<3, S> s = Vec<3, S>::Zero();       //!< [law units/s] s_e = λe + ė
+  Vec<3, S> D_hat = Vec<3, S>::Zero();   //!< [law units/s²] Ŵᵀh
+  Vec<3, S> robust = Vec<3, S>::Zero();  //!< [law units/s²] μ̂²s/(μ̂‖s‖ + σ)
+  Vec<3, S> e = Vec<3, S>::Zero();       //!< [rad] ϑ − ϑ_d
 };
+using AdaptiveTrackingDiagnostics = AdaptiveTrackingDiagnosticsT<double>;
 
-class AdaptiveTracking {
+//! S: the scalar the law computes in (issue 19); `AdaptiveTracking` is the double instance.
+template <class S = double>
+class AdaptiveTrackingT {
  public:
-  using Params = AdaptiveTrackingParams;
-  using Input = EulerTrackingInput;
-  using Output = BodyTorque;
-  using Diagnostics = AdaptiveTrackingDiagnostics;
+  using Params = AdaptiveTrackingParamsT<S>;
+  using Input = EulerTrackingInputT<S>;
+  using Output = BodyTorqueT<S>;
+  using Diagnostics = AdaptiveTrackingDiagnosticsT<S>;
+  using Core = EulerTrackingCoreT<S>;
 
-  explicit AdaptiveTracking(const Params& p) noexcept : p_(p), core_(p.gains) { reset(); }
+  explicit AdaptiveTrackingT(const Params& p) noexcept : p_(p), core_(p.gains) { reset(); }
   Status status() const noexcept { return core_.status(); }
-  double period_s() const noexcept { return core_.period_s(); }
+  S period_s() const noexcept { return core_.period_s(); }
   const Params& params() const noexcept { return p_; }
   void reset() noexcept { core_.reset(); }
 
@@ -42,14 +53,14 @@ class AdaptiveTracking {
   [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
     out = core_.failure_command();
     if (core_.status() != Status::ok) return core_.status();
-    EulerTrackingCore::Kinematics k;
+    typename Core::Kinematics k;
     const Status ks = core_.kinematics(in, k);
     if (ks != Status::ok) return ks;
-    const double c = core_.angle_scale();
-    const Vec3& lambda = p_.gains.lambda;
-    const Vec3 s = c * (lambda.cwiseProduct(k.e) + k.e_dot);
-    const Vec3 law = c * (-k.affine.A + in.reference.angles_ddot - lambda.cwiseProduct(k.e_dot));
-    EulerTrackingCore::Compensation comp;
+    const S c = core_.angle_scale();
+    const Vec<3, S>& lambda = p_.gains.lambda;
+    const Vec<3, S> s = c * (lambda.cwiseProduct(k.e) + k.e_dot);
+    const Vec<3, S> law = c * (-k.affine.A + in.reference.angles_ddot - lambda.cwiseProduct(k.e_dot));
+    typename Core::Compensation comp;
     const Status cs = core_.compensate_and_adapt(k, s, law, out, comp);
     if (diag) {
       diag->s = s;
@@ -60,15 +71,17 @@ class AdaptiveTracking {
     return cs;
   }
 
-  const Mat<7, 3>& weights() const noexcept { return core_.compensator().weights(); }
-  double mu() const noexcept { return core_.compensator().mu(); }
-  RbfCompensator<6, 7, 3>& compensator() noexcept { return core_.compensator(); }
+  const Mat<7, 3, S>& weights() const noexcept { return core_.compensator().weights(); }
+  S mu() const noexcept { return core_.compensator().mu(); }
+  RbfCompensator<6, 7, 3, S>& compensator() noexcept { return core_.compensator(); }
 
  private:
   Params p_;
-  EulerTrackingCore core_;
+  Core core_;
 };
 
+using AdaptiveTracking = AdaptiveTrackingT<double>;
 ADCS_ASSERT_COMPONENT(AdaptiveTracking);
+ADCS_ASSERT_COMPONENT(AdaptiveTrackingT<float>);
 
 }  // namespace adcs

@@ -26,6 +26,9 @@ enum class AngleUnits {
 };
 
 inline constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+//! The same in the scalar S, rounded once from the double value.
+template <class S>
+inline constexpr S deg_per_rad_v = static_cast<S>(kDegPerRad);
 
 //! RBF layer of seed 002 §4 / spec §B.5: 7 nodes on a 6-D input [e (deg); ė (deg/s)], widths 0.1.
 //! Row 6, entry 1 repaired to −0.03 (spec B.4 #19).
@@ -63,71 +66,97 @@ inline RbfCompensatorParams<6, 7, 3> seed002_compensator() noexcept {
 }
 
 //! Gains shared by both laws (seed 002 Table 2 defaults).
-struct EulerTrackingGains {
+template <class S = double>
+struct EulerTrackingGainsT {
   //! [kg m²] inertia in B⁻¹ = J G and A (the paper uses the true J). No default: NaN until set,
   //! so a forgotten inertia is refused (status() == invalid_parameter), never taken as I.
-  Mat3 J = Mat3::Constant(kUnset);
-  Vec3 lambda = Vec3::Constant(0.125);       //!< [1/s] λ, seed 002 Table 2
-  Vec3 K = Vec3(0.5, 0.1, 0.5);              //!< [law units] K, seed 002 Table 2
-  RbfCompensatorParams<6, 7, 3> compensator = seed002_compensator();  //!< τ_w, τ_μ, β, γ, σ, RBF layer
+  Mat<3, 3, S> J = Mat<3, 3, S>::Constant(unset_v<S>);
+  Vec<3, S> lambda = Vec<3, S>::Constant(S(0.125));  //!< [1/s] λ, seed 002 Table 2
+  Vec<3, S> K = Vec<3, S>(S(0.5), S(0.1), S(0.5));   //!< [law units] K, seed 002 Table 2
+  //! τ_w, τ_μ, β, γ, σ, RBF layer (seed 002 Table 2, rounded once into S)
+  RbfCompensatorParams<6, 7, 3, S> compensator = seed002_compensator().template cast<S>();
   AngleUnits units = AngleUnits::radians;    //!< spec B.4 #18
-  double period_s = 1.0e-4;                  //!< [s] spec §B.5 (the paper's law is continuous)
+  S period_s = S(1.0e-4);                    //!< [s] spec §B.5 (the paper's law is continuous)
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
+  //! The same gains in another scalar (each value rounded once; validated by the law).
+  template <class T>
+  EulerTrackingGainsT<T> cast() const noexcept {
+    EulerTrackingGainsT<T> q;
+    q.J = scalar_cast<T>(J);
+    q.lambda = scalar_cast<T>(lambda);
+    q.K = scalar_cast<T>(K);
+    q.compensator = compensator.template cast<T>();
+    q.units = units;
+    q.period_s = narrow_scalar<T>(period_s);
+    q.on_failure = on_failure;
+    return q;
+  }
 };
+using EulerTrackingGains = EulerTrackingGainsT<double>;
 
 //! What both Euler-angle laws read: the time since the manoeuvre started (ρ(t) of the PPC law
 //! is measured from it), the attitude in its Euler view and the reference in the same view.
-struct EulerTrackingInput {
-  double t_s = 0.0;                 //!< [s] time since the start of the manoeuvre
-  AttitudeStateEuler123 state{};    //!< ϑ (x-y-z Euler angles of B relative to N), ω_BN_B
-  EulerReferenceSample reference{};  //!< ϑ_d, ϑ̇_d, ϑ̈_d
+template <class S = double>
+struct EulerTrackingInputT {
+  S t_s = S(0);                          //!< [s] time since the start of the manoeuvre
+  AttitudeStateEuler123T<S> state{};     //!< ϑ (x-y-z Euler angles of B relative to N), ω_BN_B
+  EulerReferenceSampleT<S> reference{};  //!< ϑ_d, ϑ̇_d, ϑ̈_d
+  template <class T>
+  EulerTrackingInputT<T> cast() const noexcept {
+    return {narrow_scalar<T>(t_s), state.template cast<T>(), reference.template cast<T>()};
+  }
 };
+using EulerTrackingInput = EulerTrackingInputT<double>;
 
 //! The shared arithmetic; owns the compensator, the last command and the validated constants.
-class EulerTrackingCore {
+template <class S = double>
+class EulerTrackingCoreT {
  public:
+  using Vec3S = Vec<3, S>;
+  using Mat3S = Mat<3, 3, S>;
+  using Torque = BodyTorqueT<S>;
   struct Kinematics {
-    EulerAffine affine{};          //!< F, G, ϑ̇, A, B, B⁻¹ at the measurement
-    Vec3 e = Vec3::Zero();         //!< [rad] ϑ − ϑ_d
-    Vec3 e_dot = Vec3::Zero();     //!< [rad/s] ϑ̇ − ϑ̇_d
+    EulerAffineT<S> affine{};        //!< F, G, ϑ̇, A, B, B⁻¹ at the measurement
+    Vec3S e = Vec3S::Zero();         //!< [rad] ϑ − ϑ_d
+    Vec3S e_dot = Vec3S::Zero();     //!< [rad/s] ϑ̇ − ϑ̇_d
   };
   struct Compensation {
-    Vec3 D_hat = Vec3::Zero(), robust = Vec3::Zero();
+    Vec3S D_hat = Vec3S::Zero(), robust = Vec3S::Zero();
   };
 
-  explicit EulerTrackingCore(const EulerTrackingGains& g) noexcept : g_(g), comp_(g.compensator) {
-    const Eigen::LLT<Mat3> llt(g_.J);
-    J_inv_ = llt.solve(Mat3::Identity());
+  explicit EulerTrackingCoreT(const EulerTrackingGainsT<S>& g) noexcept : g_(g), comp_(g.compensator) {
+    const Eigen::LLT<Mat3S> llt(g_.J);
+    J_inv_ = llt.solve(Mat3S::Identity());
     const bool ok = all_finite(g_.J) && llt.info() == Eigen::Success && all_finite(J_inv_) &&
-                    all_finite(g_.lambda) && (g_.lambda.array() > 0.0).all() && all_finite(g_.K) &&
-                    (g_.K.array() > 0.0).all() && comp_.status() == Status::ok &&
-                    std::isfinite(g_.period_s) && g_.period_s > 0.0;
+                    all_finite(g_.lambda) && (g_.lambda.array() > S(0)).all() && all_finite(g_.K) &&
+                    (g_.K.array() > S(0)).all() && comp_.status() == Status::ok &&
+                    std::isfinite(g_.period_s) && g_.period_s > S(0);
     status_ = ok ? Status::ok : Status::invalid_parameter;
   }
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return g_.period_s; }
-  double angle_scale() const noexcept { return g_.units == AngleUnits::degrees ? kDegPerRad : 1.0; }
+  S period_s() const noexcept { return g_.period_s; }
+  S angle_scale() const noexcept { return g_.units == AngleUnits::degrees ? deg_per_rad_v<S> : S(1); }
 
   void reset() noexcept {
     comp_.reset();
-    last_ = BodyTorque{};
+    last_ = Torque{};
   }
-  const BodyTorque& last() const noexcept { return last_; }
+  const Torque& last() const noexcept { return last_; }
   //! What a step outputs until it succeeds: zero torque, or the last good command (hold_last).
-  BodyTorque failure_command() const noexcept {
-    return adcs::failure_command(g_.on_failure, last_, BodyTorque{});
+  Torque failure_command() const noexcept {
+    return adcs::failure_command(g_.on_failure, last_, Torque{});
   }
-  RbfCompensator<6, 7, 3>& compensator() noexcept { return comp_; }
-  const RbfCompensator<6, 7, 3>& compensator() const noexcept { return comp_; }
+  RbfCompensator<6, 7, 3, S>& compensator() noexcept { return comp_; }
+  const RbfCompensator<6, 7, 3, S>& compensator() const noexcept { return comp_; }
 
   //! Steps 1 and 10: finite checks, ϑ̇ = F ω, e, ė, A, B⁻¹. non_finite_input or singular.
-  [[nodiscard]] Status kinematics(const EulerTrackingInput& in, Kinematics& k) const noexcept {
-    const AttitudeStateEuler123& m = in.state;
-    const EulerReferenceSample& r = in.reference;
+  [[nodiscard]] Status kinematics(const EulerTrackingInputT<S>& in, Kinematics& k) const noexcept {
+    const AttitudeStateEuler123T<S>& m = in.state;
+    const EulerReferenceSampleT<S>& r = in.reference;
     if (!std::isfinite(in.t_s) || !all_finite(r.angles) || !all_finite(r.angles_dot) ||
         !all_finite(r.angles_ddot))
       return Status::non_finite_input;
-    const Status s = euler_affine(g_.J, J_inv_, m.theta_BN_rad, m.omega_BN_B, k.affine);
+    const Status s = euler_affine<S>(g_.J, J_inv_, m.theta_BN_rad, m.omega_BN_B, k.affine);
     if (s != Status::ok) return s;
     k.e = m.theta_BN_rad - r.angles;
     k.e_dot = k.affine.angles_dot - r.angles_dot;
@@ -137,16 +166,16 @@ class EulerTrackingCore {
   //! Steps 11-14: u = B⁻¹ (law − D̂ − μ̂² s/(μ̂‖s‖ + σ) − K s) / c with `law` the model part in law
   //! units, then one period of seed 002 eqs. (13)-(14). Commits the estimates and the command only if
   //! everything is finite (out_of_range otherwise, nothing changed).
-  [[nodiscard]] Status compensate_and_adapt(const Kinematics& k, const Vec3& s, const Vec3& law,
-                                            BodyTorque& out, Compensation& c) noexcept {
+  [[nodiscard]] Status compensate_and_adapt(const Kinematics& k, const Vec3S& s, const Vec3S& law,
+                                            Torque& out, Compensation& c) noexcept {
     if (!all_finite(s) || !all_finite(law)) return Status::out_of_range;
-    Vec<6> x;
-    x << kDegPerRad * k.e, kDegPerRad * k.e_dot;  // RBF input in degrees (spec B.4 #18)
+    Vec<6, S> x;
+    x << deg_per_rad_v<S> * k.e, deg_per_rad_v<S> * k.e_dot;  // RBF input in degrees (spec B.4 #18)
     const auto o = comp_.evaluate(x, s);                                           // steps 11-12
-    const Vec3 bracket = law - o.D_hat - o.robust - g_.K.cwiseProduct(s);
-    const Vec3 u = k.affine.B_inv * (bracket / angle_scale());                     // step 13, seed 002 eq. (12)
-    Mat<7, 3> W_next;
-    double mu_next;
+    const Vec3S bracket = law - o.D_hat - o.robust - g_.K.cwiseProduct(s);
+    const Vec3S u = k.affine.B_inv * (bracket / angle_scale());                    // step 13, seed 002 eq. (12)
+    Mat<7, 3, S> W_next;
+    S mu_next;
     comp_.propose(o, s, g_.period_s, W_next, mu_next);                     // step 14
     c.D_hat = o.D_hat;
     c.robust = o.robust;
@@ -158,11 +187,12 @@ class EulerTrackingCore {
   }
 
  private:
-  EulerTrackingGains g_;
-  RbfCompensator<6, 7, 3> comp_;
-  Mat3 J_inv_ = Mat3::Identity();
-  BodyTorque last_{};
+  EulerTrackingGainsT<S> g_;
+  RbfCompensator<6, 7, 3, S> comp_;
+  Mat3S J_inv_ = Mat3S::Identity();
+  Torque last_{};
   Status status_ = Status::ok;
 };
+using EulerTrackingCore = EulerTrackingCoreT<double>;
 
 }  // namespace adcs

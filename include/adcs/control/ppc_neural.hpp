@@ -25,37 +25,50 @@
 
 namespace adcs {
 
-struct PpcNeuralParams {
-  EulerTrackingGains gains{};                 //!< J, λ, K, RBF compensator, units, period
-  PpcParams<3> ppc = seed002_performance();   //!< ρ0, ρ∞, k, δ per axis [rad], seed 002 Table 2
+template <class S = double>
+struct PpcNeuralParamsT {
+  EulerTrackingGainsT<S> gains{};  //!< J, λ, K, RBF compensator, units, period
+  //! ρ0, ρ∞, k, δ per axis [rad], seed 002 Table 2 (rounded once into S)
+  PpcParams<3, S> ppc = seed002_performance().template cast<S>();
+  template <class T>
+  PpcNeuralParamsT<T> cast() const noexcept {
+    return {gains.template cast<T>(), ppc.template cast<T>()};
+  }
 };
+using PpcNeuralParams = PpcNeuralParamsT<double>;
 
 //! Optional per-step diagnostics (caller-owned).
-struct PpcNeuralDiagnostics {
-  PpcSample<3> ppc{};             //!< ρ, z, ε, r, ... (law units)
-  Vec3 s = Vec3::Zero();          //!< [-/s] sliding variable λε + ε̇
-  Vec3 D_hat = Vec3::Zero();      //!< [law units/s²] Ŵᵀh
-  Vec3 robust = Vec3::Zero();     //!< [law units/s²] μ̂²s/(μ̂‖s‖ + σ)
-  Vec3 e = Vec3::Zero();          //!< [rad] ϑ − ϑ_d
-  double funnel_margin = 0.0;     //!< [-] min distance of z to its interval edge (> 0 inside)
-  bool funnel_reopened = false;   //!< this step re-opened the funnel (ppc.recovery = reopen)
+template <class S = double>
+struct PpcNeuralDiagnosticsT {
+  PpcSample<3, S> ppc{};                //!< ρ, z, ε, r, ... (law units)
+  Vec<3, S> s = Vec<3, S>::Zero();      //!< [-/s] sliding variable λε + ε̇
+  Vec<3, S> D_hat = Vec<3, S>::Zero();  //!< [law units/s²] Ŵᵀh
+  Vec<3, S> robust = Vec<3, S>::Zero(); //!< [law units/s²] μ̂²s/(μ̂‖s‖ + σ)
+  Vec<3, S> e = Vec<3, S>::Zero();      //!< [rad] ϑ − ϑ_d
+  S funnel_margin = S(0);               //!< [-] min distance of z to its interval edge (> 0 inside)
+  bool funnel_reopened = false;         //!< this step re-opened the funnel (ppc.recovery = reopen)
 };
+using PpcNeuralDiagnostics = PpcNeuralDiagnosticsT<double>;
 
-class PpcNeural {
+//! S: the scalar the law computes in (issue 19); `PpcNeural` is the double instance.
+template <class S = double>
+class PpcNeuralT {
  public:
-  using Params = PpcNeuralParams;
-  using Input = EulerTrackingInput;
-  using Output = BodyTorque;
-  using Diagnostics = PpcNeuralDiagnostics;
+  using Params = PpcNeuralParamsT<S>;
+  using Input = EulerTrackingInputT<S>;
+  using Output = BodyTorqueT<S>;
+  using Diagnostics = PpcNeuralDiagnosticsT<S>;
+  using Core = EulerTrackingCoreT<S>;
+  using Vec3S = Vec<3, S>;
 
-  explicit PpcNeural(const Params& p) noexcept
+  explicit PpcNeuralT(const Params& p) noexcept
       : p_(p), core_(p.gains), ppc_(scaled(p.ppc, core_.angle_scale())) {
     status_ = core_.status() == Status::ok && ppc_.status() == Status::ok ? Status::ok : Status::invalid_parameter;
     reset();
   }
 
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return core_.period_s(); }
+  S period_s() const noexcept { return core_.period_s(); }
   const Params& params() const noexcept { return p_; }
 
   //! Estimates to Ŵ = 0, μ̂ = 0, no recoveries; the funnel is fixed again by the next step's e.
@@ -80,11 +93,11 @@ class PpcNeural {
     out = core_.failure_command();
     if (diag) diag->funnel_reopened = false;
     if (status_ != Status::ok) return status_;
-    EulerTrackingCore::Kinematics k;
+    typename Core::Kinematics k;
     const Status ks = core_.kinematics(in, k);
     if (ks != Status::ok) return ks;
-    const double c = core_.angle_scale();
-    const Vec3 e = c * k.e, e_dot = c * k.e_dot;  // law units
+    const S c = core_.angle_scale();
+    const Vec3S e = c * k.e, e_dot = c * k.e_dot;  // law units
     const bool recover = p_.ppc.recovery == FunnelRecovery::reopen;
     Status s = Status::ok;
     if (started_) {
@@ -94,7 +107,7 @@ class PpcNeural {
     // First step, or a violation to recover from: change a copy of the funnel (the branches fixed
     // from e(0), or re-opened), kept only if the step is applied, so a rejected sample (e.g. an
     // overflow further down) never latches a funnel from its e.
-    PrescribedPerformance<3> funnel = ppc_;
+    PrescribedPerformance<3, S> funnel = ppc_;
     if (!started_) {
       const Status init = funnel.init(e);
       if (init != Status::ok && !(init == Status::out_of_range && recover)) return init;
@@ -117,28 +130,28 @@ class PpcNeural {
   //! Funnel re-openings since construction or reset() (each counts once, whatever the channels).
   long funnel_recoveries() const noexcept { return recoveries_; }
   //! The funnel in force (branches, performance functions, their start times).
-  const PrescribedPerformance<3>& funnel() const noexcept { return ppc_; }
+  const PrescribedPerformance<3, S>& funnel() const noexcept { return ppc_; }
 
-  const Mat<7, 3>& weights() const noexcept { return core_.compensator().weights(); }
-  double mu() const noexcept { return core_.compensator().mu(); }
-  RbfCompensator<6, 7, 3>& compensator() noexcept { return core_.compensator(); }
+  const Mat<7, 3, S>& weights() const noexcept { return core_.compensator().weights(); }
+  S mu() const noexcept { return core_.compensator().mu(); }
+  RbfCompensator<6, 7, 3, S>& compensator() noexcept { return core_.compensator(); }
   PpcBranch branch(int i) const noexcept { return ppc_.branch(i); }
 
  private:
   //! Steps 2-14 with the funnel `ppc` (branches fixed); commits the estimates and the command
   //! only when it returns ok or constraint_violated.
-  Status apply(const PrescribedPerformance<3>& ppc, const Input& in, const EulerTrackingCore::Kinematics& k,
-               const Vec3& e, const Vec3& e_dot, Output& out, Diagnostics* diag) noexcept {
-    const double c = core_.angle_scale();
-    PpcSample<3> ps;
+  Status apply(const PrescribedPerformance<3, S>& ppc, const Input& in, const typename Core::Kinematics& k,
+               const Vec3S& e, const Vec3S& e_dot, Output& out, Diagnostics* diag) noexcept {
+    const S c = core_.angle_scale();
+    PpcSample<3, S> ps;
     const Status ts = ppc.transform(in.t_s, e, e_dot, ps);                             // steps 2-7
     if (!usable(ts)) return ts;
-    const Vec3& lambda = p_.gains.lambda;
-    const Vec3 s = lambda.cwiseProduct(ps.eps) + ps.eps_dot;                        // seed 002 eq. (10)
-    const Vec3 RinvV = (lambda + ps.r_dot.cwiseQuotient(ps.r)).cwiseProduct(ps.q) + ps.q_dot_offset -
+    const Vec3S& lambda = p_.gains.lambda;
+    const Vec3S s = lambda.cwiseProduct(ps.eps) + ps.eps_dot;                        // seed 002 eq. (10)
+    const Vec3S RinvV = (lambda + ps.r_dot.cwiseQuotient(ps.r)).cwiseProduct(ps.q) + ps.q_dot_offset -
                        c * in.reference.angles_ddot;                                            // seed 002 eq. (11)
-    const Vec3 law = -c * k.affine.A - RinvV;                                        // seed 002 eq. (12), model part
-    EulerTrackingCore::Compensation comp;
+    const Vec3S law = -c * k.affine.A - RinvV;                                        // seed 002 eq. (12), model part
+    typename Core::Compensation comp;
     const Status cs = core_.compensate_and_adapt(k, s, law, out, comp);             // steps 11-14
     if (diag) {
       diag->ppc = ps;
@@ -152,7 +165,7 @@ class PpcNeural {
     return ts;
   }
 
-  static PpcParams<3> scaled(PpcParams<3> p, double c) noexcept {
+  static PpcParams<3, S> scaled(PpcParams<3, S> p, S c) noexcept {
     for (auto& f : p.rho) {
       f.rho0 *= c;
       f.rho_inf *= c;
@@ -161,13 +174,15 @@ class PpcNeural {
   }
 
   Params p_;
-  EulerTrackingCore core_;
-  PrescribedPerformance<3> ppc_;
+  Core core_;
+  PrescribedPerformance<3, S> ppc_;
   bool started_ = false;
   long recoveries_ = 0;
   Status status_ = Status::ok;
 };
 
+using PpcNeural = PpcNeuralT<double>;
 ADCS_ASSERT_COMPONENT(PpcNeural);
+ADCS_ASSERT_COMPONENT(PpcNeuralT<float>);
 
 }  // namespace adcs

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <type_traits>
+
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
 #include "adcs/math/so3.hpp"
@@ -16,6 +18,11 @@ namespace adcs {
 
 //! Smallest |cos(pitch)| accepted by the kinematic inverses (about 1e-6 deg from gimbal lock).
 inline constexpr double kEulerSingularCos = 1e-8;
+//! The same in the scalar S. In float the angle nearest 90° is 4.4e-8 rad from it (spacing 1.2e-7),
+//! so 1e-8 would never trip and sec θ would reach 2e7: 1e-6 (~8 spacings, ~6e-5 deg) instead.
+//! Ours (issue 19).
+template <class S>
+inline constexpr S euler_singular_cos_v = std::is_same_v<S, double> ? S(kEulerSingularCos) : S(1e-6);
 
 // ---------------------------------------------------------------------------------------------
 // x-y-z sequence, seed 002 eq. (3)
@@ -46,12 +53,12 @@ inline Mat<3, 3, S> euler123_G(const Vec<3, S>& angles) noexcept {
 }
 
 //! theta_dot = F(theta) omega. Returns Status::singular (F untouched) at |cos(theta)| <
-//! kEulerSingularCos, non_finite_input (F untouched) for NaN/Inf angles.   seed 002 eq. (3)
+//! euler_singular_cos_v<S>, non_finite_input (F untouched) for NaN/Inf angles.   seed 002 eq. (3)
 template <class S>
 inline Status euler123_F(const identity_t<Vec<3, S>>& angles, Mat<3, 3, S>& F) noexcept {
   if (!all_finite(angles)) return Status::non_finite_input;
   const S ct = std::cos(angles(1)), st = std::sin(angles(1));
-  if (!(std::abs(ct) >= S(kEulerSingularCos))) return Status::singular;
+  if (!(std::abs(ct) >= euler_singular_cos_v<S>)) return Status::singular;
   const S cp = std::cos(angles(2)), sp = std::sin(angles(2));
   const S sec = S(1) / ct, tn = st / ct;
   F << cp * sec, -sp * sec, S(0),  //
@@ -107,7 +114,7 @@ template <class S>
 inline Status euler321_F(const identity_t<Vec<3, S>>& ypr, Mat<3, 3, S>& F) noexcept {
   if (!all_finite(ypr)) return Status::non_finite_input;
   const S ct = std::cos(ypr(1)), st = std::sin(ypr(1));
-  if (!(std::abs(ct) >= S(kEulerSingularCos))) return Status::singular;
+  if (!(std::abs(ct) >= euler_singular_cos_v<S>)) return Status::singular;
   const S cf = std::cos(ypr(2)), sf = std::sin(ypr(2));
   F << S(0), sf, cf,  //
       S(0), cf * ct, -sf * ct,  //

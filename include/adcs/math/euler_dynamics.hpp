@@ -11,28 +11,31 @@ namespace adcs {
 
 //! ϑ̈ = A + B u + D̄ in closed form at one (ϑ, ω) (spec §B.2), shared by plant tests and
 //! controllers. F, G, ϑ̇ = F ω are returned too so a controller computes them once.
-struct EulerAffine {
-  Mat3 F = Mat3::Identity();      //!< [-] ϑ̇ = F ω
-  Mat3 G = Mat3::Identity();      //!< [-] ω = G ϑ̇
-  Vec3 angles_dot = Vec3::Zero(); //!< [rad/s] ϑ̇
-  Vec3 A = Vec3::Zero();          //!< [rad/s²] drift −F Ġ ϑ̇ − F J⁻¹ (ω × J ω)
-  Mat3 B = Mat3::Identity();      //!< [rad/(s² N m)] F J⁻¹
-  Mat3 B_inv = Mat3::Identity();  //!< [N m s²/rad] J G
+template <class S = double>
+struct EulerAffineT {
+  Mat<3, 3, S> F = Mat<3, 3, S>::Identity();      //!< [-] ϑ̇ = F ω
+  Mat<3, 3, S> G = Mat<3, 3, S>::Identity();      //!< [-] ω = G ϑ̇
+  Vec<3, S> angles_dot = Vec<3, S>::Zero();       //!< [rad/s] ϑ̇
+  Vec<3, S> A = Vec<3, S>::Zero();                //!< [rad/s²] drift −F Ġ ϑ̇ − F J⁻¹ (ω × J ω)
+  Mat<3, 3, S> B = Mat<3, 3, S>::Identity();      //!< [rad/(s² N m)] F J⁻¹
+  Mat<3, 3, S> B_inv = Mat<3, 3, S>::Identity();  //!< [N m s²/rad] J G
 };
+using EulerAffine = EulerAffineT<double>;
 
 //! Fills `out` for x-y-z Euler angles ϑ [rad] and body rate ω [rad/s] (J⁻¹ precomputed by the
 //! caller). Returns singular at gimbal lock (|cos θ| < kEulerSingularCos) and non_finite_input for
 //! NaN/Inf, leaving `out` untouched in both cases.   seed 002 eqs. (3)-(4), spec §B.2
-inline Status euler_affine(const Mat3& J, const Mat3& J_inv, const Vec3& angles, const Vec3& omega,
-                           EulerAffine& out) noexcept {
+template <class S>
+inline Status euler_affine(const Mat<3, 3, S>& J, const Mat<3, 3, S>& J_inv, const Vec<3, S>& angles,
+                           const Vec<3, S>& omega, EulerAffineT<S>& out) noexcept {
   if (!all_finite(angles) || !all_finite(omega)) return Status::non_finite_input;
-  Mat3 F;
-  const Status s = euler123_F(angles, F);
+  Mat<3, 3, S> F;
+  const Status s = euler123_F<S>(angles, F);
   if (s != Status::ok) return s;
   out.F = F;
   out.G = euler123_G(angles);
   out.angles_dot = F * omega;
-  const Mat3 FJinv = F * J_inv;
+  const Mat<3, 3, S> FJinv = F * J_inv;
   out.A = -F * (euler123_G_dot(angles, out.angles_dot) * out.angles_dot) - FJinv * omega.cross(J * omega);
   out.B = FJinv;
   out.B_inv = J * out.G;
