@@ -195,9 +195,9 @@ class PrescribedPerformance {
     bool clamped = false;
     s.margin_min = std::numeric_limits<S>::infinity();
     for (int i = 0; i < K; ++i) {
-      const PerformanceSampleT<S> f = evaluate(rho_[i], t - t0_[i]);              // step 2
+      const PerformanceSampleT<S> f = evaluate(rho_[i], t - t0_[i]);           // step 2
       const S rho = f.rho, rd = f.rho_dot, rdd = f.rho_ddot;
-      S z = e(i) / rho;                                                   // step 3
+      S z = e(i) / rho;                                                         // step 3
       const S margin = ppc_margin(z, branch_[i], p_.delta(i));
       s.margin_min = std::fmin(s.margin_min, margin);
       if (!(margin > S(0))) {
@@ -209,7 +209,7 @@ class PrescribedPerformance {
       }
       PpcInverseT<S> inv;
       if (ppc_S_inverse(z, branch_[i], p_.delta(i), inv) != Status::ok) return Status::out_of_range;
-      const S z_dot = (e_dot(i) - z * rd) / rho;                           // step 6
+      const S z_dot = (e_dot(i) - z * rd) / rho;                                // step 6
       s.rho(i) = rho;
       s.rho_dot(i) = rd;
       s.rho_ddot(i) = rdd;
@@ -280,7 +280,7 @@ class PrescribedPerformance {
 
   Params p_;
   std::array<PerformanceFunctionT<S>, K> rho_{};  //!< in force: p_.rho until a channel is re-opened
-  std::array<S, K> t0_{};                   //!< [s] when each channel's function started
+  std::array<S, K> t0_{};                         //!< [s] when each channel's function started
   std::array<PpcBranch, K> branch_{};
   Status status_ = Status::ok;
 };
