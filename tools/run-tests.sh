@@ -4,7 +4,7 @@
 # has the measured figure).
 #   1. install missing Debian packages (tools/setup-deps.sh);
 #   2. Release tree (clang++-14, -Werror), BUILD_DIR: the Cortex-M7 checks (every public header,
-#      the Cortex-M4F float replay, the C example on both boards,
+#      the Cortex-M4F float replays, the C example on both boards,
 #      the instantiation units, the host/QEMU replays and their instruction counts), the callgrind
 #      instruction counts and adcs-bench (adcs-sim only when run-main asks for it);
 #   3. ASan + UBSan tree (clang++-14, -Werror), build-asan (tools/run-sanitizers.sh): every unit,
