@@ -1,9 +1,10 @@
 #pragma once
 // Replay core of seed 002 (control/ppc_neural.hpp): the PPATC law with the paper's gains, true
 // inertia and performance functions (seed002_tracking_gains(), seed002_performance(); U_rad,
-// T = 1e-4 s), as flexible-ppc in src/scenarios/flexible_ppc.cpp. One step() = one
-// PpcNeural::step() with the reference sample as input (BM_FlexiblePPC_Step also samples the
-// reference; here it is recorded so that its sin/cos are not part of the step).
+// T = 1e-4 s), as flexible-ppc in src/scenarios/flexible_ppc.cpp. One step() = the recorded row
+// converted to the law's Input ("inputs") + one PpcNeural::step() with the reference sample as
+// input ("ppc_step"; BM_FlexiblePPC_Step also samples the reference; here it is recorded so that
+// its sin/cos are not part of the step).
 // S = double is the Cortex-M7 System "ppc", S = float the Cortex-M4F System "ppc_f" (issue 19:
 // PpcNeuralT<float> on a single-precision FPU; its parameters are the double ones rounded once,
 // and each row is converted to float before the step, as a flight computer's sensor interface
