@@ -12,10 +12,14 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/c/adcs.h"
 #include "adcs/control/mrp_pd.hpp"
+#include "adcs/control/ppc_neural.hpp"
+#include "adcs/plant/flexible_configurations.hpp"
+#include "adcs/reference/sinusoidal_euler.hpp"
 #include "alloc_guard.hpp"  // tests/nomalloc
 #include "counting_new.hpp"
 
@@ -213,6 +217,140 @@ TEST(CInterface, MrpPdEqualsTheCppComponentBitForBitWithoutHeap) {
       adcs_mrp_pd4f_init, adcs_mrp_pd4f_step);
 }
 
+// ---- Seed 002: PPATC (adcs_ppc, adcs_ppcf) ----------------------------------------------------
+
+// The paper's law (seed 002 Table 2) through the C parameter struct of scalar S.
+template <class CParams>
+CParams ppc_c_params() {
+  using S = std::remove_reference_t<decltype(CParams{}.period_s)>;
+  const adcs::PpcNeuralParams d{adcs::seed002_tracking_gains(), adcs::seed002_performance()};
+  CParams cp{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) cp.J_kgm2[i][j] = static_cast<S>(d.gains.J(i, j));
+    cp.lambda[i] = static_cast<S>(d.gains.lambda(i));
+    cp.K[i] = static_cast<S>(d.gains.K(i));
+    cp.tau_w[i] = static_cast<S>(d.gains.compensator.tau_w(i));
+    cp.rho0_rad[i] = static_cast<S>(d.ppc.rho[i].rho0);
+    cp.rho_inf_rad[i] = static_cast<S>(d.ppc.rho[i].rho_inf);
+    cp.k_rho[i] = static_cast<S>(d.ppc.rho[i].k);
+    cp.delta[i] = static_cast<S>(d.ppc.delta(i));
+  }
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 7; ++j) cp.rbf_centers[i][j] = static_cast<S>(d.gains.compensator.layer.centers(i, j));
+  for (int j = 0; j < 7; ++j) cp.rbf_widths[j] = static_cast<S>(d.gains.compensator.layer.widths(j));
+  cp.tau_mu = static_cast<S>(d.gains.compensator.tau_mu);
+  cp.beta = static_cast<S>(d.gains.compensator.beta);
+  cp.gamma = static_cast<S>(d.gains.compensator.gamma);
+  cp.sigma = static_cast<S>(d.gains.compensator.sigma);
+  cp.units = ADCS_ANGLE_UNITS_RADIANS;
+  cp.period_s = static_cast<S>(d.gains.period_s);
+  cp.robust_clamp = 0;
+  cp.funnel_recovery = ADCS_FUNNEL_REOPEN;
+  cp.on_failure = ADCS_FAILURE_SAFE_COMMAND;
+  return cp;
+}
+
+// Sample k of the paper's manoeuvre near its start (e inside the funnel).
+template <class CInput>
+CInput ppc_c_input(int k) {
+  using S = std::remove_reference_t<decltype(CInput{}.t_s)>;
+  const double t = 1e-4 * k;
+  const adcs::EulerReferenceSample r = adcs::SinusoidalEulerReference().sample(t);
+  const double d2r = adcs::kPiRad / 180.0;
+  const adcs::Vec3 theta = r.angles + adcs::Vec3(0.25, 0.15, -0.20) * d2r * std::exp(-0.1 * t);
+  CInput ci{};
+  ci.t_s = static_cast<S>(t);
+  for (int i = 0; i < 3; ++i) {
+    ci.theta_BN_rad[i] = static_cast<S>(theta(i));
+    ci.omega_BN_B[i] = static_cast<S>(r.angles_dot(i) + 1e-4 * (i + 1));
+    ci.theta_d_rad[i] = static_cast<S>(r.angles(i));
+    ci.theta_dot_d_rad_s[i] = static_cast<S>(r.angles_dot(i));
+    ci.theta_ddot_d_rad_s2[i] = static_cast<S>(r.angles_ddot(i));
+  }
+  return ci;
+}
+
+template <class S, class CParams, class CState, class CInput, class COutput, class Init, class Step>
+void expect_ppc_equals_cpp(Init init, Step step) {
+  const CParams cp = ppc_c_params<CParams>();
+  CState cs;
+  ASSERT_EQ(init(&cp, &cs), ADCS_STATUS_OK);
+  // The C++ law from the same values: the double parameters, rounded once into S.
+  adcs::PpcNeuralT<S> cpp(adcs::PpcNeuralParams{adcs::seed002_tracking_gains(), adcs::seed002_performance()}.cast<S>());
+  ASSERT_EQ(cpp.status(), adcs::Status::ok);
+  long allocations = 0;
+  for (int k = 0; k < 20; ++k) {
+    const CInput ci = ppc_c_input<CInput>(k);
+    adcs::EulerTrackingInputT<S> in;
+    in.t_s = ci.t_s;
+    for (int i = 0; i < 3; ++i) {
+      in.state.theta_BN_rad(i) = ci.theta_BN_rad[i];
+      in.state.omega_BN_B(i) = ci.omega_BN_B[i];
+      in.reference.angles(i) = ci.theta_d_rad[i];
+      in.reference.angles_dot(i) = ci.theta_dot_d_rad_s[i];
+      in.reference.angles_ddot(i) = ci.theta_ddot_d_rad_s2[i];
+    }
+    COutput co{};
+    adcs::BodyTorqueT<S> out;
+    adcs_status s = 0;
+    {
+      adcs::test::NoAllocScope scope;
+      s = step(&cs, &ci, &co);
+      allocations += scope.allocations();
+    }
+    ASSERT_EQ(s, static_cast<adcs_status>(cpp.step(in, out))) << k;
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(std::memcmp(&co.torque_B_Nm[i], &out.torque_B_Nm(i), sizeof(S)), 0) << k;
+  }
+  EXPECT_EQ(allocations, 0);
+}
+
+TEST(CInterface, PpcEqualsTheCppComponentBitForBitWithoutHeap) {
+  expect_ppc_equals_cpp<double, adcs_ppc_params, adcs_ppc_state, adcs_ppc_input, adcs_ppc_output>(adcs_ppc_init,
+                                                                                                   adcs_ppc_step);
+  expect_ppc_equals_cpp<float, adcs_ppcf_params, adcs_ppcf_state, adcs_ppcf_input, adcs_ppcf_output>(
+      adcs_ppcf_init, adcs_ppcf_step);
+}
+
+TEST(CInterface, PpcRefusalsAndFailureCommands) {
+  adcs_ppc_state s;
+  adcs_ppc_output out = {{7.0, 7.0, 7.0}};
+  const adcs_ppc_input in = ppc_c_input<adcs_ppc_input>(0);
+  // NULL pointers and a state init never wrote: refused, nothing written.
+  adcs_ppc_params p = ppc_c_params<adcs_ppc_params>();
+  EXPECT_EQ(adcs_ppc_init(nullptr, &s), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(adcs_ppc_init(&p, nullptr), ADCS_STATUS_INVALID_PARAMETER);
+  static adcs_ppc_state never;
+  EXPECT_EQ(adcs_ppc_step(&never, &in, &out), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(out.torque_B_Nm[0], 7.0);
+  // Refused sets: a forgotten inertia (zeros: not SPD), unknown enumerations, a funnel with
+  // ρ∞ ≥ ρ0. Each step then commands zero torque.
+  for (int which = 0; which < 5; ++which) {
+    p = ppc_c_params<adcs_ppc_params>();
+    if (which == 0) std::memset(p.J_kgm2, 0, sizeof p.J_kgm2);
+    if (which == 1) p.units = 9;
+    if (which == 2) p.funnel_recovery = -1;
+    if (which == 3) p.on_failure = 2;
+    if (which == 4) p.rho_inf_rad[1] = p.rho0_rad[1];
+    EXPECT_EQ(adcs_ppc_init(&p, &s), ADCS_STATUS_INVALID_PARAMETER) << which;
+    EXPECT_EQ(adcs_ppc_step(&s, &in, &out), ADCS_STATUS_INVALID_PARAMETER) << which;
+    for (double t : out.torque_B_Nm) EXPECT_EQ(t, 0.0) << which;
+  }
+  // Bad input under each policy: zero torque, or the last good command; in float too.
+  for (adcs_failure_policy policy : {ADCS_FAILURE_SAFE_COMMAND, ADCS_FAILURE_HOLD_LAST}) {
+    adcs_ppcf_params pf = ppc_c_params<adcs_ppcf_params>();
+    pf.on_failure = policy;
+    adcs_ppcf_state sf;
+    ASSERT_EQ(adcs_ppcf_init(&pf, &sf), ADCS_STATUS_OK);
+    adcs_ppcf_input inf = ppc_c_input<adcs_ppcf_input>(0);
+    adcs_ppcf_output good{}, bad{};
+    ASSERT_EQ(adcs_ppcf_step(&sf, &inf, &good), ADCS_STATUS_OK);
+    inf.omega_BN_B[2] = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(adcs_ppcf_step(&sf, &inf, &bad), ADCS_STATUS_NON_FINITE_INPUT);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(bad.torque_B_Nm[i], policy == ADCS_FAILURE_HOLD_LAST ? good.torque_B_Nm[i] : 0.0f);
+  }
+}
+
 TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_mrp_pd4_state), 352u);
   EXPECT_EQ(sizeof(adcs_mrp_pd4f_state), 192u);
@@ -220,6 +358,10 @@ TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_rw_alloc4f_state), 160u);
   EXPECT_EQ(alignof(adcs_mrp_pd4_state), 16u);
   EXPECT_EQ(alignof(adcs_rw_alloc4f_state), 16u);
+  EXPECT_EQ(sizeof(adcs_ppc_state), 2832u);
+  EXPECT_EQ(sizeof(adcs_ppcf_state), 1360u);
+  EXPECT_EQ(alignof(adcs_ppc_state), 16u);
+  EXPECT_EQ(alignof(adcs_ppcf_state), 4u);
 }
 
 }  // namespace ADCS_UNITY_ID

@@ -22,10 +22,11 @@
  *   No call allocates, blocks, or throws; every call is reentrant for distinct states.
  *
  * Families: MRP PD with reaction-wheel momentum feedback (4 wheels; the attitude law of the
- * rigid-wheel scenarios, `adcs::MrpPd<4, S>`) and the reaction-wheel torque allocation
- * (`adcs::RwTorqueAllocator<4, S>`), each in double (suffix none) and single precision (suffix f,
- * for FPUs without double: Cortex-M4F). The other families follow as their float instantiations
- * land (docs/TARGET.md).
+ * rigid-wheel scenarios, `adcs::MrpPd<4, S>`), the reaction-wheel torque allocation
+ * (`adcs::RwTorqueAllocator<4, S>`) and seed 002's prescribed-performance adaptive RBF law
+ * (`adcs::PpcNeuralT<S>`), each in double (suffix none) and single precision (suffix f, for FPUs
+ * without double: Cortex-M4F). The other families follow as their float instantiations land
+ * (docs/TARGET.md).
  */
 #ifndef ADCS_C_ADCS_H
 #define ADCS_C_ADCS_H
@@ -170,6 +171,97 @@ ADCS_C_STATE(adcs_rw_alloc4f_state, ADCS_RW_ALLOC4F_STATE_SIZE, ADCS_RW_ALLOC4F_
 adcs_status adcs_rw_alloc4f_init(const adcs_rw_alloc4f_params* params, adcs_rw_alloc4f_state* state);
 adcs_status adcs_rw_alloc4f_step(adcs_rw_alloc4f_state* state, const adcs_rw_alloc4f_input* in,
                                  adcs_rw_alloc4f_output* out);
+
+/* ---- Seed 002: prescribed-performance adaptive RBF attitude tracking, PPATC --------------------
+ * (adcs/control/ppc_neural.hpp, seed 002 eq. (12)) in x-y-z Euler angles: the error e = theta -
+ * theta_d is kept inside the funnel rho(t) = (rho0 - rho_inf) e^(-k t) + rho_inf by the transform
+ * epsilon = S^-1(e/rho); a 7-node RBF network (input [e; e_dot] in degrees) and an adaptive bound
+ * compensate the lumped disturbance. Runs at params.period_s (the paper's 1e-4 s). The funnel
+ * branches are fixed by the first step's error; a violated funnel is re-opened from the current
+ * error when funnel_recovery = ADCS_FUNNEL_REOPEN (the step then returns
+ * ADCS_STATUS_CONSTRAINT_VIOLATED), or refused with ADCS_STATUS_OUT_OF_RANGE (seed 002's law). */
+typedef int32_t adcs_angle_units;
+#define ADCS_ANGLE_UNITS_RADIANS 0 /* the law's quantities in radians (reproduces every claim) */
+#define ADCS_ANGLE_UNITS_DEGREES 1 /* the law's angle-valued quantities in degrees */
+typedef int32_t adcs_funnel_recovery;
+#define ADCS_FUNNEL_NONE 0   /* seed 002's law: out_of_range until the error is back inside */
+#define ADCS_FUNNEL_REOPEN 1 /* re-open a violated funnel from the current error (the default) */
+typedef struct adcs_ppc_params {
+  double J_kgm2[3][3];          /* [kg m^2] inertia used in B^-1 = J G and the drift A; SPD */
+  double lambda[3];             /* [1/s] lambda of s = lambda eps + eps_dot, > 0 */
+  double K[3];                  /* [law units] robust gain K, > 0 */
+  double rbf_centers[6][7];     /* RBF centres c_j (column j), input units [deg; deg/s] */
+  double rbf_widths[7];         /* RBF widths b_j, > 0 */
+  double tau_w[3];              /* [-] weight adaptation gains, >= 0 */
+  double tau_mu;                /* [-] bound adaptation gain, >= 0 */
+  double beta;                  /* [-] weight leakage, >= 0 */
+  double gamma;                 /* [-] bound leakage, >= 0 */
+  double sigma;                 /* [-] robust-term constant, > 0 */
+  adcs_angle_units units;
+  double period_s;              /* [s] control period, > 0 */
+  double rho0_rad[3];           /* [rad] rho(0) per axis, > rho_inf */
+  double rho_inf_rad[3];        /* [rad] steady funnel half-width per axis, > 0 */
+  double k_rho[3];              /* [1/s] funnel decay rate per axis, > 0 */
+  double delta[3];              /* [-] overshoot parameters in [0, 1] (seed 002: 0) */
+  int32_t robust_clamp;         /* non-zero: clamp z at a funnel edge (flagged) instead of refusing */
+  adcs_funnel_recovery funnel_recovery;
+  adcs_failure_policy on_failure;
+} adcs_ppc_params;
+typedef struct adcs_ppc_input {
+  double t_s;                   /* [s] time since the manoeuvre started (rho(t) is measured from it) */
+  double theta_BN_rad[3];       /* [rad] x-y-z Euler angles of B relative to N */
+  double omega_BN_B[3];         /* [rad/s] body rate, B components */
+  double theta_d_rad[3];        /* [rad] reference angles */
+  double theta_dot_d_rad_s[3];  /* [rad/s] their rates */
+  double theta_ddot_d_rad_s2[3]; /* [rad/s^2] their accelerations */
+} adcs_ppc_input;
+typedef struct adcs_ppc_output {
+  double torque_B_Nm[3];        /* [N m] control torque, B components */
+} adcs_ppc_output;
+#define ADCS_PPC_STATE_SIZE 2832
+#define ADCS_PPC_STATE_ALIGN 16
+ADCS_C_STATE(adcs_ppc_state, ADCS_PPC_STATE_SIZE, ADCS_PPC_STATE_ALIGN);
+adcs_status adcs_ppc_init(const adcs_ppc_params* params, adcs_ppc_state* state);
+adcs_status adcs_ppc_step(adcs_ppc_state* state, const adcs_ppc_input* in, adcs_ppc_output* out);
+
+/* The same law in single precision (every field float; the law computes in float). */
+typedef struct adcs_ppcf_params {
+  float J_kgm2[3][3];
+  float lambda[3];
+  float K[3];
+  float rbf_centers[6][7];
+  float rbf_widths[7];
+  float tau_w[3];
+  float tau_mu;
+  float beta;
+  float gamma;
+  float sigma;
+  adcs_angle_units units;
+  float period_s;
+  float rho0_rad[3];
+  float rho_inf_rad[3];
+  float k_rho[3];
+  float delta[3];
+  int32_t robust_clamp;
+  adcs_funnel_recovery funnel_recovery;
+  adcs_failure_policy on_failure;
+} adcs_ppcf_params;
+typedef struct adcs_ppcf_input {
+  float t_s;
+  float theta_BN_rad[3];
+  float omega_BN_B[3];
+  float theta_d_rad[3];
+  float theta_dot_d_rad_s[3];
+  float theta_ddot_d_rad_s2[3];
+} adcs_ppcf_input;
+typedef struct adcs_ppcf_output {
+  float torque_B_Nm[3];
+} adcs_ppcf_output;
+#define ADCS_PPCF_STATE_SIZE 1360
+#define ADCS_PPCF_STATE_ALIGN 4
+ADCS_C_STATE(adcs_ppcf_state, ADCS_PPCF_STATE_SIZE, ADCS_PPCF_STATE_ALIGN);
+adcs_status adcs_ppcf_init(const adcs_ppcf_params* params, adcs_ppcf_state* state);
+adcs_status adcs_ppcf_step(adcs_ppcf_state* state, const adcs_ppcf_input* in, adcs_ppcf_output* out);
 
 #ifdef __cplusplus
 }

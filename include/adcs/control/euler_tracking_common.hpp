@@ -31,37 +31,45 @@ template <class S>
 inline constexpr S deg_per_rad_v = static_cast<S>(kDegPerRad);
 
 //! RBF layer of seed 002 §4 / spec §B.5: 7 nodes on a 6-D input [e (deg); ė (deg/s)], widths 0.1.
-//! Row 6, entry 1 repaired to −0.03 (spec B.4 #19).
-inline RbfLayerParams<6, 7> seed002_rbf_layer() noexcept {
-  RbfLayerParams<6, 7> p;
-  p.centers << -0.25, -0.17, -0.08, 0.0, 0.08, 0.17, 0.25,  //
-      -0.15, -0.10, -0.05, 0.0, 0.05, 0.10, 0.15,           //
-      -0.20, -0.13, -0.07, 0.0, 0.07, 0.13, 0.20,           //
-      -0.03, -0.02, -0.01, 0.0, 0.01, 0.02, 0.03,           //
-      -0.15, -0.10, -0.05, 0.0, 0.05, 0.10, 0.15,           //
-      -0.03, -0.02, -0.01, 0.0, 0.01, 0.02, 0.03;
-  p.widths.setConstant(0.1);
+//! Row 6, entry 1 repaired to −0.03 (spec B.4 #19). In the scalar S, each value rounded once at
+//! compile time (a float flight build computes no double to set its defaults).
+template <class S = double>
+inline RbfLayerParams<6, 7, S> seed002_rbf_layer() noexcept {
+  static constexpr S kCenters[6][7] = {
+      {S(-0.25), S(-0.17), S(-0.08), S(0.0), S(0.08), S(0.17), S(0.25)},
+      {S(-0.15), S(-0.10), S(-0.05), S(0.0), S(0.05), S(0.10), S(0.15)},
+      {S(-0.20), S(-0.13), S(-0.07), S(0.0), S(0.07), S(0.13), S(0.20)},
+      {S(-0.03), S(-0.02), S(-0.01), S(0.0), S(0.01), S(0.02), S(0.03)},
+      {S(-0.15), S(-0.10), S(-0.05), S(0.0), S(0.05), S(0.10), S(0.15)},
+      {S(-0.03), S(-0.02), S(-0.01), S(0.0), S(0.01), S(0.02), S(0.03)}};
+  RbfLayerParams<6, 7, S> p;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 7; ++j) p.centers(i, j) = kCenters[i][j];
+  p.widths.setConstant(S(0.1));
   return p;
 }
 
 //! Performance functions of seed 002 Table 2 in radians: ρ0 = 0.3°, ρ∞ = 0.005°, k = 0.15 1/s,
 //! δ = 0 on every axis (admissible because no e_i(0) is zero, spec B.4 #15).
-inline PpcParams<3> seed002_performance() noexcept {
-  PpcParams<3> p;
-  for (auto& f : p.rho) f = PerformanceFunction{0.3 / kDegPerRad, 0.005 / kDegPerRad, 0.15};
+template <class S = double>
+inline PpcParams<3, S> seed002_performance() noexcept {
+  constexpr S rho0 = static_cast<S>(0.3 / kDegPerRad), rho_inf = static_cast<S>(0.005 / kDegPerRad);
+  PpcParams<3, S> p;
+  for (auto& f : p.rho) f = PerformanceFunctionT<S>{rho0, rho_inf, S(0.15)};
   p.delta.setZero();
   return p;
 }
 
 //! RBF compensator of seed 002 Table 2: τ_wi = τ_μ = 0.5, β = γ = 0.01, σ = 0.01.
-inline RbfCompensatorParams<6, 7, 3> seed002_compensator() noexcept {
-  RbfCompensatorParams<6, 7, 3> p;
-  p.layer = seed002_rbf_layer();
-  p.tau_w.setConstant(0.5);
-  p.tau_mu = 0.5;
-  p.beta = 0.01;
-  p.gamma = 0.01;
-  p.sigma = 0.01;
+template <class S = double>
+inline RbfCompensatorParams<6, 7, 3, S> seed002_compensator() noexcept {
+  RbfCompensatorParams<6, 7, 3, S> p;
+  p.layer = seed002_rbf_layer<S>();
+  p.tau_w.setConstant(S(0.5));
+  p.tau_mu = S(0.5);
+  p.beta = S(0.01);
+  p.gamma = S(0.01);
+  p.sigma = S(0.01);
   return p;
 }
 
@@ -73,8 +81,7 @@ struct EulerTrackingGainsT {
   Mat<3, 3, S> J = Mat<3, 3, S>::Constant(unset_v<S>);
   Vec<3, S> lambda = Vec<3, S>::Constant(S(0.125));  //!< [1/s] λ, seed 002 Table 2
   Vec<3, S> K = Vec<3, S>(S(0.5), S(0.1), S(0.5));   //!< [law units] K, seed 002 Table 2
-  //! τ_w, τ_μ, β, γ, σ, RBF layer (seed 002 Table 2, rounded once into S)
-  RbfCompensatorParams<6, 7, 3, S> compensator = seed002_compensator().template cast<S>();
+  RbfCompensatorParams<6, 7, 3, S> compensator = seed002_compensator<S>();  //!< τ_w, τ_μ, β, γ, σ, RBF layer
   AngleUnits units = AngleUnits::radians;    //!< spec B.4 #18
   S period_s = S(1.0e-4);                    //!< [s] spec §B.5 (the paper's law is continuous)
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold

@@ -15,6 +15,8 @@
 // Unit convention (spec B.4 #18): U_rad (default) — every controller quantity in SI radians, the
 // RBF input in degrees; U_deg — the law's angle-valued quantities in degrees (the option the
 // spec keeps for comparison). Only the numeric weight of −K s, D̂ and μ̂ changes between them.
+#include <cstdint>
+
 #include "adcs/adapt/ppc.hpp"
 #include "adcs/adapt/rbf_compensator.hpp"
 #include "adcs/control/euler_tracking_common.hpp"
@@ -28,8 +30,7 @@ namespace adcs {
 template <class S = double>
 struct PpcNeuralParamsT {
   EulerTrackingGainsT<S> gains{};  //!< J, λ, K, RBF compensator, units, period
-  //! ρ0, ρ∞, k, δ per axis [rad], seed 002 Table 2 (rounded once into S)
-  PpcParams<3, S> ppc = seed002_performance().template cast<S>();
+  PpcParams<3, S> ppc = seed002_performance<S>();  //!< ρ0, ρ∞, k, δ per axis [rad], seed 002 Table 2
   template <class T>
   PpcNeuralParamsT<T> cast() const noexcept {
     return {gains.template cast<T>(), ppc.template cast<T>()};
@@ -177,7 +178,9 @@ class PpcNeuralT {
   Core core_;
   PrescribedPerformance<3, S> ppc_;
   bool started_ = false;
-  long recoveries_ = 0;
+  //! 32 bits on every platform (a long is 64 on x86-64, 32 on the Cortex-M), so that the C
+  //! interface's state has one layout everywhere (include/adcs/c/adcs.h).
+  std::int32_t recoveries_ = 0;
   Status status_ = Status::ok;
 };
 
