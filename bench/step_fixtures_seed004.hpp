@@ -49,21 +49,25 @@ struct DragFreeModel {
 };
 
 //! Algorithm 1 (ESKF, two uncoupled blocks): step() = predict + update.
-struct DragFreeEskfStep {
+template <class Filter>
+struct DragFreeEskfStepOf {
   DragFreeModel model;
-  DragFreeEskf f{model.e1};
-  DragFreeEskf::Input in = [] {
-    DragFreeEskf::Input i;  // u = 0, Δf̄ = 0
+  Filter f{model.e1};
+  typename Filter::Input in = [] {
+    typename Filter::Input i;  // u = 0, Δf̄ = 0
     i.y.setConstant(1e-8);
     return i;
   }();
-  DragFreeEskf::Output out;
+  typename Filter::Output out;
   void operator()() noexcept {
     in.y(0) += 1e-12;
     escape(f.step(in, out));
     escape(out);
   }
 };
+//! The U-D form (DragFreeEskf) and the Joseph form it replaced, measured in the same run (issue 20).
+using DragFreeEskfStep = DragFreeEskfStepOf<DragFreeEskf>;
+using DragFreeEskfJosephStep = DragFreeEskfStepOf<DragFreeEskfJoseph>;
 
 //! Algorithm 2 (saturated ESF, one axis): step() = predict + update, alternating in-range and
 //! saturated readings.

@@ -4,7 +4,8 @@
 #include "step_benchmark.hpp"
 
 namespace adcs::bench {
-ADCS_STEP_BENCHMARK(DragFreeEskf);  // seed 004 Algorithm 1
+ADCS_STEP_BENCHMARK(DragFreeEskf);  // seed 004 Algorithm 1 (U-D factors)
+ADCS_STEP_BENCHMARK(DragFreeEskfJoseph);  // the same in the Joseph form (the reference, issue 20)
 ADCS_STEP_BENCHMARK(SaturatedEsf);  // seed 004 Algorithm 2, one axis
 ADCS_STEP_BENCHMARK(Fusion);  // seed 004 Algorithm 3, one axis
 ADCS_STEP_BENCHMARK(Adrc);  // seed 004 ADRC law alone
@@ -14,6 +15,7 @@ ADCS_STEP_BENCHMARK(DragFreeAdrc);  // seed 004 whole sample: Algorithms 1-3 + A
 namespace ADCS_UNITY_ID {
 const StepEntry kSeed004Steps[] = {
     ADCS_STEP_ENTRY(DragFreeEskf),
+    ADCS_STEP_ENTRY(DragFreeEskfJoseph),
     ADCS_STEP_ENTRY(SaturatedEsf),
     ADCS_STEP_ENTRY(Fusion),
     ADCS_STEP_ENTRY(Adrc),

@@ -30,6 +30,7 @@
 #include "adcs/control/pid.hpp"
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/estimate/eskf.hpp"
+#include "adcs/estimate/drag_free_eskf.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/flexible_spacecraft.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
@@ -106,7 +107,11 @@ template struct EskfOutput<27>;
 template class Eskf<27, 9, 9, 9>;
 template class Eskf<18, 9, 9, 6>;  // the two blocks of DragFreeEskf
 template class Eskf<9, 9, 9, 3>;
-template class PartitionedEskf<18, 9, 9, 9, 6, 3>;
+template class PartitionedFilter<Eskf<18, 9, 9, 6>, Eskf<9, 9, 9, 3>>;  // DragFreeEskfJoseph
+template class EskfUd<18, 9, 9, 6, 12>;  // the two blocks of DragFreeEskf
+template class EskfUd<9, 9, 9, 3, 6>;
+template class PartitionedFilter<EskfUd<18, 9, 9, 6, 12>, EskfUd<9, 9, 9, 3, 6>>;
+template bool ud_factorize<5>(const Mat<5, 5>&, UdFactors<5>&) noexcept;
 template bool keep_psd<3>(Mat<3, 3>&) noexcept;
 // math/
 template Status expm<3>(const Mat<3, 3>&, Mat<3, 3>&) noexcept;

@@ -1,5 +1,5 @@
 // libFuzzer harness, seed 004: the drag-free sample chain — DragFreeEskf (Algorithm 1 as the
-// partitioned 18 + 9 filter), three SaturatedEsf (Algorithm 2), fuse_axis (Algorithm 3) and
+// partitioned 18 + 9 filter in U-D form), three SaturatedEsf (Algorithm 2), fuse_axis (Algorithm 3) and
 // DragFreeAdrc — driven by a fuzzed sequence of operations, plus a small generic Eskf<3, 1, 1, 1>
 // and Pid<3> on their own. Input format: fuzz_common.hpp; first byte = target, second =
 // configuration, then one operation byte per step.
@@ -8,7 +8,8 @@
 //  - a non-finite input gives exactly non_finite_input;
 //  - a status that is not usable() leaves every estimate, covariance, θ and counter bitwise
 //    unchanged (both filters for fuse_axis; integrals and the held command for ADRC and PID);
-//  - an applied step leaves finite estimates and exactly symmetric covariances; SaturatedEsf
+//  - an applied step leaves finite estimates and exactly symmetric covariances (DragFreeEskf: its
+//    U-D factors with D >= 0 and U unit upper triangular, issue 20); SaturatedEsf
 //    returns saturated exactly when the reading sits on a range bound (skip mode: estimate kept,
 //    counter +1); fuse_axis leaves both filters holding the fused [r; ṙ; f̂];
 //  - ADRC / PID commands are finite whatever the status, and ADRC's within ±limit when applied.
@@ -103,6 +104,12 @@ bool healthy(const Eigen::MatrixBase<Derived>& P) {
   return fuzz::finite(P.eval()) && P == P.transpose();
 }
 
+template <int N>
+bool ud_healthy(const adcs::UdFactors<N>& f) {
+  return fuzz::finite(f.U) && fuzz::finite(f.D) && (f.D.array() >= 0.0).all() && f.U.isUpperTriangular(0.0) &&
+         f.U.diagonal().isOnes(0.0);
+}
+
 void check_alg1(const adcs::DragFreeEskf& f, Status s, const Alg1Snap& before, bool finite_in, const char* what) {
   fuzz::check_status_vs_input(s, finite_in, what);
   const Alg1Snap after(f);
@@ -112,6 +119,10 @@ void check_alg1(const adcs::DragFreeEskf& f, Status s, const Alg1Snap& before, b
   }
   FUZZ_CHECK(s == Status::ok, "DragFreeEskf: undocumented usable status");
   FUZZ_CHECK(fuzz::finite(after.x) && healthy(after.P), "DragFreeEskf: committed a non-finite or asymmetric estimate");
+  // U-D factors (issue 20): PSD by construction, D >= 0 and U unit upper triangular after every
+  // committed step, whatever the inputs.
+  FUZZ_CHECK(ud_healthy(f.block1().factors()) && ud_healthy(f.block2().factors()),
+             "DragFreeEskf: U-D factors left the PSD cone (D < 0) or lost their shape");
 }
 
 void check_alg2(const adcs::SaturatedEsf& f, Status s, const Alg2Snap& before, bool finite_in, const char* what) {

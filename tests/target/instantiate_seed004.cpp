@@ -1,6 +1,6 @@
 // Cortex-M7 instantiation unit 4 of 5 (see instantiate_attitude.cpp): seed 004's flight filters
-// and laws as the drag-free sample runs them: Algorithm 1 as two blocks, Algorithm 2, fusion,
-// ADRC, the PID baseline.
+// and laws as the drag-free sample runs them: Algorithm 1 as two U-D blocks, Algorithm 2, fusion,
+// ADRC, the PID baseline (the Joseph-form reference is host-only: tests and bench).
 #include "adcs/control/adrc.hpp"
 #include "adcs/control/pid.hpp"
 #include "adcs/estimate/drag_free_eskf.hpp"
@@ -12,7 +12,8 @@
 
 namespace adcs {
 template class Pid<1>;
-template class PartitionedEskf<18, 9, 9, 9, 6, 3>;
+template class PartitionedFilter<EskfUd<18, 9, 9, 6, kDragFreeAttitudeNoiseColumns>,
+                                 EskfUd<9, 9, 9, 3, kDragFreeTranslationNoiseColumns>>;
 }  // namespace adcs
 
 extern "C" int adcs_target_smoke_seed004(const double* in, double* out) {

@@ -3,19 +3,35 @@
 // has (spec §B.2.2 index map): the attitude chain φ_sc, φ̇_sc, T_Dsc, φ_rel, φ̇_rel, T_Dtm
 // (18 states, outputs φ_sc and φ_rel; seed 004 eq. (3) couples φ_rel to the spacecraft's torques) and the
 // translation r, ṙ, F_Dsc (9 states, output r_rel). Nothing in A_d, B_d S B_dᵀ, B_e, C_d, R or
-// P_0 = 0.01 I couples them, so this is Algorithm 1 exactly (see PartitionedEskf) at about a third
-// of the work of the 27-state matrices. Construction rejects parameters that do couple them.
+// P_0 = 0.01 I couples them, so this is Algorithm 1 exactly (see PartitionedFilter) at about a
+// third of the work of the 27-state matrices. Construction rejects parameters that do couple them.
+//
+// DragFreeEskf keeps each block's covariance as U-D factors (EskfUd, issue 20): PSD by
+// construction, no PSD test or eigen projection on the step. DragFreeEskfJoseph is the same
+// filter in the Joseph form (Eskf), the reference the tests compare against. Within a block
+// nothing decouples further: I_sc, K_rot and K_trans couple the axes (seed 004 Table 2), and the
+// attitude chain drives the relative one (seed 004 eq. (3)).
 #include "adcs/core/component.hpp"
+#include "adcs/estimate/eskf_ud.hpp"
 #include "adcs/estimate/partitioned_eskf.hpp"
 #include "adcs/plant/drag_free.hpp"
 
 namespace adcs {
 
-using DragFreeEskfBase = PartitionedEskf<18, 9, kDragFreeInputs, kDragFreeInputs, 6, 3>;
+//! The noise columns each U-D block can hold: the attitude block has B_e's T_Dsc and T_Dtm
+//! columns and B_d's T_Csc and T_Ctm ones (12; with spec §B.8's q = 0 on T_Dtm, 9 are used), the
+//! translation block F_Dsc's and F_Csc's (6). Parameters that need more couple the blocks and are
+//! refused anyway (PartitionedFilter::status).
+inline constexpr int kDragFreeAttitudeNoiseColumns = 12, kDragFreeTranslationNoiseColumns = 6;
+
+using DragFreeEskfBase =
+    PartitionedFilter<EskfUd<18, kDragFreeInputs, kDragFreeInputs, 6, kDragFreeAttitudeNoiseColumns>,
+                      EskfUd<9, kDragFreeInputs, kDragFreeInputs, 3, kDragFreeTranslationNoiseColumns>>;
+using DragFreeEskfJosephBase = PartitionedEskf<18, 9, kDragFreeInputs, kDragFreeInputs, 6, 3>;
 
 //! The attitude block: state indices 0-8 and 18-26, outputs φ_sc (0-2) and φ_rel (6-8).
-inline DragFreeEskfBase::Partition drag_free_attitude_partition() noexcept {
-  DragFreeEskfBase::Partition part;
+inline FilterPartition<18, 6> drag_free_attitude_partition() noexcept {
+  FilterPartition<18, 6> part;
   for (int i = 0; i < 9; ++i) {
     part.states[i] = DragFreeIndex::phi_sc + i;
     part.states[9 + i] = DragFreeIndex::phi_rel + i;
@@ -27,15 +43,33 @@ inline DragFreeEskfBase::Partition drag_free_attitude_partition() noexcept {
   return part;
 }
 
+//! The attitude block in the U-D filter's order: φ_rel, φ̇_rel, T_Dtm, φ_sc, φ̇_sc, T_Dsc. Each
+//! state comes before the states its row of A_d depends on (seed 004 eqs. (1), (3): φ_sc on φ̇_sc
+//! and T_Dsc, φ_rel and φ̇_rel on each other, T_Dsc and T_Dtm), so A_d is upper triangular but for
+//! the 6 x 6 (φ_rel, φ̇_rel) oscillator and Thornton's re-factoring skips the zeros below the
+//! diagonal (mwgs_ud). Outputs φ_rel (6-8), then φ_sc (0-2).
+inline FilterPartition<18, 6> drag_free_attitude_partition_ud() noexcept {
+  FilterPartition<18, 6> part;
+  for (int i = 0; i < 9; ++i) {
+    part.states[i] = DragFreeIndex::phi_rel + i;
+    part.states[9 + i] = DragFreeIndex::phi_sc + i;
+  }
+  for (int i = 0; i < 3; ++i) {
+    part.outputs[i] = 6 + i;
+    part.outputs[3 + i] = i;
+  }
+  return part;
+}
+
 namespace detail {
 //! DragFreeEskf itself, a template over its base only so that including this header instantiates
 //! nothing: g++ instantiates every template that a non-template inline function calls, used or
 //! not, and the two Eskf blocks' constructors (their parameter checks) cost ~18 CPU-s in every
 //! translation unit that included this header (docs/DECISIONS.md, "Unity batches").
-template <class Base>
+template <class Base, FilterPartition<18, 6> (*kPartition)()>
 class DragFreeEskf : public Base {
  public:
-  explicit DragFreeEskf(const typename Base::Params& p) noexcept : Base(p, drag_free_attitude_partition()) {}
+  explicit DragFreeEskf(const typename Base::Params& p) noexcept : Base(p, kPartition()) {}
 
   //! ok, or invalid_parameter: an unset (NaN) or invalid matrix, or parameters that couple the
   //! attitude and translation blocks (PartitionedEskf::status). A refused filter answers
@@ -47,8 +81,11 @@ class DragFreeEskf : public Base {
 
 //! Parameters: EskfParams<27, 9, 9, 9> (the model matrices and R have no default; X̂_0, P_0 are
 //! spec §B.4's), usually from drag_free_discretize() as the dragfree-* scenarios build them.
-using DragFreeEskf = detail::DragFreeEskf<DragFreeEskfBase>;
+using DragFreeEskf = detail::DragFreeEskf<DragFreeEskfBase, drag_free_attitude_partition_ud>;
+//! The same filter in the Joseph form: the reference of the tests and of BM_DragFreeEskfJoseph_Step.
+using DragFreeEskfJoseph = detail::DragFreeEskf<DragFreeEskfJosephBase, drag_free_attitude_partition>;
 
 ADCS_ASSERT_COMPONENT(DragFreeEskf);
+ADCS_ASSERT_COMPONENT(DragFreeEskfJoseph);
 
 }  // namespace adcs

@@ -25,6 +25,7 @@
 #include "adcs/core/component.hpp"
 #include "adcs/core/validation.hpp"
 #include "adcs/estimate/extended_state_covariance.hpp"
+#include "adcs/math/sparse_rows.hpp"
 
 namespace adcs {
 
@@ -66,7 +67,29 @@ struct EskfDiagnostics {
   double theta = 0.0;           //!< [-] θ_k of the time update
 };
 
+//! The parameter check both forms of Algorithm 1 (Eskf, EskfUd) make: A_d, B_d, B_e, C_d and
+//! X̂_0 finite; q finite >= 0; S symmetric PSD; R symmetric positive definite; P_0 symmetric PSD
+//! with tr P_0 > 0 (θ* divides by it); period_s finite > 0.
+template <int N, int NU, int NL, int NY>
+bool valid(const EskfParams<N, NU, NL, NY>& p) noexcept {
+  return all_finite(p.A_d) && all_finite(p.B_d) && all_finite(p.B_e) && all_finite(p.C_d) && finite_nonnegative(p.q) &&
+         symmetric_positive_semidefinite<NU>(p.S) && symmetric_positive_definite<NY>(p.R) && all_finite(p.x0) &&
+         symmetric_positive_semidefinite<N>(p.P0) && p.P0.trace() > 0.0 && finite_positive(p.period_s);
+}
+
 namespace detail {
+//! X̂⁻ = A_d X̂ + B_d u + B_e Ĝ with Ĝ_i = clip(Δf̄_i, ±√q_i), A_d from its nonzeros.   seed 004 eq. (9)
+template <int N, int NU, int NL>
+Vec<N> extended_state_prediction(const SparseRows<N, N>& A_nz, const Mat<N, NU>& B_d, const Mat<N, NL>& B_e,
+                                 const Vec<NL>& sqrt_q, const Vec<N>& x, const Vec<NU>& u,
+                                 const Vec<NL>& delta_f_nominal) noexcept {
+  const Vec<NL> G_hat = delta_f_nominal.cwiseMax(-sqrt_q).cwiseMin(sqrt_q);  // seed 004 eq. (9)
+  Vec<N> out = A_nz.mul_by_transpose(Mat<1, N>(x.transpose())).transpose();  // A_d x (sparse)
+  out.noalias() += B_d * u;
+  out.noalias() += B_e * G_hat;
+  return out;
+}
+
 //! step() of the filters that have predict() and update(): the time update, then the measurement
 //! update; a rejected measurement leaves the prediction in place (the filter coasts, as a flight
 //! estimator does when a sensor sample is bad), a rejected time update leaves everything. The
@@ -94,6 +117,7 @@ class Eskf {
   using Diagnostics = EskfDiagnostics;
   using State = Vec<N>;
   using Covariance = Mat<N, N>;
+  static constexpr int kStates = N, kInputs = NU, kChannels = NL, kOutputs = NY;
 
   explicit Eskf(const Params& p) noexcept : p_(p) {
     Q1_ = 4.0 * static_cast<double>(NL) * p_.B_e * p_.q.asDiagonal() * p_.B_e.transpose();  // Q1 = 4 B_e Q B_eᵀ, Q = l diag q
@@ -101,12 +125,7 @@ class Eskf {
     Q1_ = 0.5 * (Q1_ + Q1_.transpose()).eval();  // bit-symmetric, so the prediction is too
     Q2_ = 0.5 * (Q2_ + Q2_.transpose()).eval();
     sqrt_q_ = p_.q.cwiseMax(0.0).cwiseSqrt();
-    const bool ok = all_finite(p_.A_d) && all_finite(p_.B_d) && all_finite(p_.B_e) && all_finite(p_.C_d) &&
-                    finite_nonnegative(p_.q) && symmetric_positive_semidefinite<NU>(p_.S) &&
-                    symmetric_positive_definite<NY>(p_.R) && all_finite(p_.x0) &&
-                    symmetric_positive_semidefinite<N>(p_.P0) && p_.P0.trace() > 0.0 &&
-                    finite_positive(p_.period_s);
-    status_ = ok ? Status::ok : Status::invalid_parameter;
+    status_ = valid(p_) ? Status::ok : Status::invalid_parameter;
     theta_fixed_ = p_.P0.trace() > 0.0 ? std::sqrt(Q1_.trace() / p_.P0.trace()) : 0.0;  // θ* (literal)
     A_nz_.assign(p_.A_d);
     C_nz_.assign(p_.C_d);
@@ -172,18 +191,19 @@ class Eskf {
 
   //! A_d P A_dᵀ from the current P (the first half of the time update; θ_k is taken from it).
   Covariance propagated_covariance() const noexcept { return sandwich_A(P_); }
+  //! The block interface of PartitionedFilter: the first half of the time update and its trace.
+  using Propagation = Covariance;
+  Propagation propagate() const noexcept { return sandwich_A(P_); }
+  static double propagated_trace(const Propagation& APA) noexcept { return APA.trace(); }
   //! tr Q1, Q1 = 4 B_e (l diag q) B_eᵀ (θ_k = √(tr Q1 / tr APA)).
   double q1_trace() const noexcept { return Q1_.trace(); }
 
   //! The time update with a given A P Aᵀ and θ (see predict).
-  [[nodiscard]] Status predict_candidate(const Vec<NU>& u, const Vec<NL>& delta_f_nominal, const Covariance& APA,
+  [[nodiscard]] Status predict_candidate(const Vec<NU>& u, const Vec<NL>& delta_f_nominal, const Propagation& APA,
                                          double theta, Candidate& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(u) || !all_finite(delta_f_nominal)) return Status::non_finite_input;
-    const Vec<NL> G_hat = delta_f_nominal.cwiseMax(-sqrt_q_).cwiseMin(sqrt_q_);  // seed 004 eq. (9)
-    out.x = A_nz_.mul_by_transpose(Mat<1, N>(x_.transpose())).transpose();  // A_d x (sparse)
-    out.x.noalias() += p_.B_d * u;
-    out.x.noalias() += p_.B_e * G_hat;
+    out.x = detail::extended_state_prediction<N, NU, NL>(A_nz_, p_.B_d, p_.B_e, sqrt_q_, x_, u, delta_f_nominal);
     out.P = bounded_increment_prediction<N>(APA, Q1_, Q2_, theta);
     if (!all_finite(out.x) || !all_finite(out.P)) return Status::out_of_range;
     flush_negligible<N>(out.P);  // symmetric PSD terms (APA mirrored); the update checks the cone
@@ -237,6 +257,7 @@ class Eskf {
 
   const State& state() const noexcept { return x_; }
   const Covariance& covariance() const noexcept { return P_; }
+  double covariance_entry(int i, int j) const noexcept { return P_(i, j); }
   //! θ used by the last prediction (0 when no channel has an increment bound).
   double theta() const noexcept { return theta_; }
   //! How many times a covariance had to be projected back onto the PSD cone.
@@ -244,9 +265,18 @@ class Eskf {
 
   //! Overwrites the estimate (fusion, Algorithm 3). Rejects non-finite values (nothing changed).
   [[nodiscard]] Status set_estimate(const State& x, const Covariance& P) noexcept {
+    Candidate c;
+    const Status s = estimate_candidate(x, P, c);
+    if (s == Status::ok) accept(c);
+    return s;
+  }
+  //! set_estimate's check, as a candidate (PartitionedFilter sets both blocks or neither).
+  [[nodiscard]] Status estimate_candidate(const State& x, const Covariance& P, Candidate& out) const noexcept {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
-    x_ = x;
-    P_ = P;
+    out.x = x;
+    out.P = P;
+    out.theta = -1.0;
+    out.projected = false;
     return Status::ok;
   }
 
@@ -297,43 +327,9 @@ class Eskf {
     return K;
   }
 
-  //! The nonzeros of a fixed R x N matrix X, listed once row by row, to form Y Xᵀ for an
-  //! N-column Y: (Y Xᵀ)(:, i) = Σ_j X(i, j) Y(:, j), each output column accumulated in registers
-  //! from contiguous input columns (column-major) and stored once.
-  template <int R>
-  struct Nonzeros {
-    std::array<std::uint16_t, R * N> col{};
-    std::array<double, R * N> val{};
-    std::array<int, R + 1> start{};  //!< row i's entries are [start[i], start[i+1])
-    int count = 0;
-    void assign(const Mat<R, N>& X) noexcept {
-      count = 0;
-      for (int i = 0; i < R; ++i) {
-        start[i] = count;
-        for (int j = 0; j < N; ++j)
-          if (X(i, j) != 0.0) {
-            col[count] = static_cast<std::uint16_t>(j);
-            val[count] = X(i, j);
-            ++count;
-          }
-      }
-      start[R] = count;
-    }
-    template <int NR>
-    Mat<NR, R> mul_by_transpose(const Mat<NR, N>& Y) const noexcept {
-      Mat<NR, R> out;
-      for (int i = 0; i < R; ++i) {
-        Vec<NR> acc = Vec<NR>::Zero();
-        for (int k = start[i]; k < start[i + 1]; ++k) acc += val[k] * Y.col(col[k]);
-        out.col(i) = acc;
-      }
-      return out;
-    }
-  };
-
   Params p_;
-  Nonzeros<N> A_nz_;
-  Nonzeros<NY> C_nz_;
+  SparseRows<N, N> A_nz_;
+  SparseRows<NY, N> C_nz_;
   Covariance Q1_ = Covariance::Zero(), Q2_ = Covariance::Zero();
   Vec<NL> sqrt_q_ = Vec<NL>::Zero();
   double theta_fixed_ = 0.0;

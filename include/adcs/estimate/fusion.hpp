@@ -46,7 +46,8 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
 template <class Alg1 = DragFreeEskf, class Alg2 = SaturatedEsf>
 [[nodiscard]] Status fuse_axis(Alg1& alg1, Alg2& alg2, int axis,
                                FusedCovariance mode = FusedCovariance::block_diagonal) noexcept {
-  static_assert(std::is_same_v<Alg1, DragFreeEskf> && std::is_same_v<Alg2, SaturatedEsf>,
+  static_assert((std::is_same_v<Alg1, DragFreeEskf> || std::is_same_v<Alg1, DragFreeEskfJoseph>) &&
+                    std::is_same_v<Alg2, SaturatedEsf>,
                 "fuse_axis: Algorithm 3 fuses the drag-free ESKF with a saturated-accelerometer filter");
   if (axis < 0 || axis > 2 || alg1.status() != Status::ok || alg2.status() != Status::ok)
     return Status::invalid_parameter;

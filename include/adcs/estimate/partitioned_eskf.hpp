@@ -20,27 +20,38 @@
 
 namespace adcs {
 
-template <int N1, int N2, int NU, int NL, int NY1, int NY2>
-class PartitionedEskf {
+//! The states and outputs of block 1 of a PartitionedFilter (indices into the full vectors).
+template <int N1, int NY1>
+struct FilterPartition {
+  std::array<int, N1> states{};
+  std::array<int, NY1> outputs{};
+};
+
+//! Two uncoupled blocks of one filter, each an Eskf (Joseph form) or an EskfUd (U-D factors) with
+//! the same inputs and channels: both give the block interface propagate(), propagated_trace(),
+//! q1_trace(), predict_candidate(), update_candidate(), estimate_candidate(), accept(),
+//! covariance_entry() and replace_substate().
+template <class Block1T, class Block2T>
+class PartitionedFilter {
  public:
+  using Block1 = Block1T;
+  using Block2 = Block2T;
+  static constexpr int N1 = Block1::kStates, N2 = Block2::kStates;
+  static constexpr int NY1 = Block1::kOutputs, NY2 = Block2::kOutputs;
+  static constexpr int NU = Block1::kInputs, NL = Block1::kChannels;
+  static_assert(Block2::kInputs == NU && Block2::kChannels == NL, "PartitionedFilter: the blocks share u and Δf̄");
   static constexpr int N = N1 + N2;
   static constexpr int NY = NY1 + NY2;
   using Params = EskfParams<N, NU, NL, NY>;
   using Input = EskfInput<NU, NL, NY>;
   using Output = EskfOutput<N>;
   using Diagnostics = EskfDiagnostics;
-  using Block1 = Eskf<N1, NU, NL, NY1>;
-  using Block2 = Eskf<N2, NU, NL, NY2>;
   using State = Vec<N>;
   using Covariance = Mat<N, N>;
 
-  //! The states and outputs of block 1 (indices into the full vectors).
-  struct Partition {
-    std::array<int, N1> states{};
-    std::array<int, NY1> outputs{};
-  };
+  using Partition = FilterPartition<N1, NY1>;
 
-  PartitionedEskf(const Params& p, const Partition& part) noexcept
+  PartitionedFilter(const Params& p, const Partition& part) noexcept
       : status_(split(part)), b1_(sub_params<N1, NY1>(p, s1_, y1_)), b2_(sub_params<N2, NY2>(p, s2_, y2_)) {
     policy_ = p.theta_policy;
     if (status_ == Status::ok && !uncoupled(p)) status_ = Status::invalid_parameter;
@@ -73,9 +84,9 @@ class PartitionedEskf {
   //! Algorithm 1 time update (see Eskf::predict) with the θ of the whole filter.
   [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
     if (status_ != Status::ok) return status_;
-    const typename Block1::Covariance APA1 = b1_.propagated_covariance();
-    const typename Block2::Covariance APA2 = b2_.propagated_covariance();
-    const double theta = young_weight(policy_, theta_fixed_, APA1.trace() + APA2.trace(),
+    const typename Block1::Propagation APA1 = b1_.propagate();
+    const typename Block2::Propagation APA2 = b2_.propagate();
+    const double theta = young_weight(policy_, theta_fixed_, b1_.propagated_trace(APA1) + b2_.propagated_trace(APA2),
                                       b1_.q1_trace() + b2_.q1_trace());
     typename Block1::Candidate c1;
     typename Block2::Candidate c2;
@@ -115,10 +126,12 @@ class PartitionedEskf {
   //! P in the full state order (assembled; the cross-block entries are zero).
   Covariance covariance() const noexcept {
     Covariance P = Covariance::Zero();
+    const typename Block1::Covariance P1 = b1_.covariance();
+    const typename Block2::Covariance P2 = b2_.covariance();
     for (int i = 0; i < N1; ++i)
-      for (int j = 0; j < N1; ++j) P(s1_[i], s1_[j]) = b1_.covariance()(i, j);
+      for (int j = 0; j < N1; ++j) P(s1_[i], s1_[j]) = P1(i, j);
     for (int i = 0; i < N2; ++i)
-      for (int j = 0; j < N2; ++j) P(s2_[i], s2_[j]) = b2_.covariance()(i, j);
+      for (int j = 0; j < N2; ++j) P(s2_[i], s2_[j]) = P2(i, j);
     return P;
   }
   //! P(idx, idx) without assembling P.
@@ -129,7 +142,7 @@ class PartitionedEskf {
       for (int b = 0; b < K; ++b) {
         const Where wa = where(idx[a]), wb = where(idx[b]);
         if (wa.block != wb.block || wa.block == 0) continue;
-        out(a, b) = wa.block == 1 ? b1_.covariance()(wa.local, wb.local) : b2_.covariance()(wa.local, wb.local);
+        out(a, b) = wa.block == 1 ? b1_.covariance_entry(wa.local, wb.local) : b2_.covariance_entry(wa.local, wb.local);
       }
     return out;
   }
@@ -139,7 +152,8 @@ class PartitionedEskf {
   const Block2& block2() const noexcept { return b2_; }
 
   //! Overwrites the estimate. non_finite_input for non-finite values, invalid_parameter when P
-  //! couples the blocks (this filter cannot hold that); nothing changes in either case.
+  //! couples the blocks (this filter cannot hold that) or a block refuses its part (EskfUd: not
+  //! PSD); nothing changes in any case.
   [[nodiscard]] Status set_estimate(const State& x, const Covariance& P) noexcept {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
     for (int i = 0; i < N1; ++i)
@@ -157,8 +171,13 @@ class PartitionedEskf {
       x2(i) = x(s2_[i]);
       for (int j = 0; j < N2; ++j) P2(i, j) = P(s2_[i], s2_[j]);
     }
-    (void)b1_.set_estimate(x1, P1);  // cannot fail: finite, checked above
-    (void)b2_.set_estimate(x2, P2);
+    typename Block1::Candidate c1;
+    typename Block2::Candidate c2;
+    Status s = b1_.estimate_candidate(x1, P1, c1);
+    if (s == Status::ok) s = b2_.estimate_candidate(x2, P2, c2);
+    if (s != Status::ok) return s;
+    b1_.accept(c1);
+    b2_.accept(c2);
     assemble_state();
     return Status::ok;
   }
@@ -282,5 +301,9 @@ class PartitionedEskf {
   double theta_ = 0.0;
   State x_ = State::Zero();
 };
+
+//! Algorithm 1 as two uncoupled Joseph-form blocks (the reference form).
+template <int N1, int N2, int NU, int NL, int NY1, int NY2>
+using PartitionedEskf = PartitionedFilter<Eskf<N1, NU, NL, NY1>, Eskf<N2, NU, NL, NY2>>;
 
 }  // namespace adcs

@@ -1,0 +1,193 @@
+#pragma once
+// U-D covariance factors, P = U D Uᵀ with U unit upper triangular and D diagonal ≥ 0 (Bierman,
+// "Factorization Methods for Discrete Sequential Estimation", 1977; Thornton 1976). A covariance
+// kept as (U, D) is positive semidefinite by construction: every operation below produces D ≥ 0
+// from sums of squares with non-negative weights, so no PSD test and no projection is needed.
+//
+//   ud_factorize        P → (U, D)                  N³/6 multiply-adds, refuses P ∉ PSD cone
+//   ud_covariance       (U, D) → P, and one entry P_ij
+//   mwgs_ud             W diag(w) Wᵀ → (U, D)        Thornton's modified weighted Gram-Schmidt
+//   bierman_update      one scalar measurement       Bierman's update, O(N²), gain out
+#include <array>
+#include <cmath>
+
+#include "adcs/core/types.hpp"
+
+namespace adcs {
+
+//! U-D factors of an N x N covariance.
+template <int N>
+struct UdFactors {
+  Mat<N, N> U;  //!< unit upper triangular
+  Vec<N> D;     //!< diagonal, >= 0
+  //! P = 0 (U = I, D = 0). Not the default constructor: a step's candidate factors are written
+  //! whole before use, and initialising them cost ~3% of the drag-free step (memset).
+  static UdFactors zero() noexcept {
+    UdFactors f;
+    f.U.setIdentity();
+    f.D.setZero();
+    return f;
+  }
+};
+
+//! P = U D Uᵀ (formed; N³/6 multiply-adds: not for a step path).
+template <int N>
+Mat<N, N> ud_covariance(const UdFactors<N>& f) noexcept {
+  Mat<N, N> P;
+  for (int j = 0; j < N; ++j)
+    for (int i = 0; i <= j; ++i) {
+      double s = 0.0;
+      for (int k = j; k < N; ++k) s += f.U(i, k) * f.D(k) * f.U(j, k);
+      P(i, j) = s;
+      P(j, i) = s;
+    }
+  return P;
+}
+
+//! P_ij = Σ_{k ≥ max(i, j)} U_ik D_k U_jk.
+template <int N>
+double ud_covariance_entry(const UdFactors<N>& f, int i, int j) noexcept {
+  double s = 0.0;
+  for (int k = i > j ? i : j; k < N; ++k) s += f.U(i, k) * f.D(k) * f.U(j, k);
+  return s;
+}
+
+//! P → (U, D), columns from the last (upper U-D, Bierman 1977 §III.2). A pivot within
+//! 64 N ε of its diagonal entry is rounding and is taken as 0 (its column of U zeroed), so a
+//! semidefinite P (a state with zero variance, as the fusion of seed 004 eq. (41) leaves) is
+//! factored exactly. Returns false, out untouched, when P is not finite or a pivot is negative
+//! beyond that tolerance (P not PSD: there is no U-D factor to give).
+template <int N>
+bool ud_factorize(const Mat<N, N>& P, UdFactors<N>& out) noexcept {
+  if (!all_finite(P)) return false;
+  constexpr double kTol = 64.0 * N * 2.220446049250313e-16;
+  UdFactors<N> f = UdFactors<N>::zero();
+  for (int j = N - 1; j >= 0; --j) {
+    double d = P(j, j);
+    for (int k = j + 1; k < N; ++k) d -= f.U(j, k) * f.U(j, k) * f.D(k);
+    const double tol = kTol * std::abs(P(j, j));
+    if (d < -tol || !(P(j, j) >= 0.0)) return false;
+    if (d <= tol) {  // zero variance left for state j: nothing to regress on it
+      f.D(j) = 0.0;
+      for (int i = 0; i < j; ++i) f.U(i, j) = 0.0;
+      continue;
+    }
+    f.D(j) = d;
+    for (int i = 0; i < j; ++i) {
+      double s = P(i, j);
+      for (int k = j + 1; k < N; ++k) s -= f.U(i, k) * f.D(k) * f.U(j, k);
+      f.U(i, j) = s / d;
+    }
+  }
+  out = f;
+  return true;
+}
+
+//! Thornton's modified weighted Gram-Schmidt: the U-D factors of W diag(w) Wᵀ for an N x M
+//! matrix W and weights w ≥ 0 (Bierman 1977 §VI.3; Grewal & Andrews, Kalman Filtering, §6.6.2).
+//! Rows are orthogonalised from the last, each against all the rows above it at once (the modified
+//! form, stable where the classical one loses orthogonality): for row j, u = W_{0:j} (w ∘ W_j)ᵀ /
+//! D_j and W_{0:j} −= u W_j, a matrix-vector product and a rank-one update on contiguous columns.
+//! W is overwritten. D_j = Σ_k w_k W_jk² ≥ 0, so the result is PSD whatever the rounding; a row
+//! with zero weighted norm gives D_j = 0 and U(:, j) = e_j. ~N² M multiply-adds for a dense W.
+//!
+//! Structure: only columns [first[i], m) of row i may be nonzero (m ≤ M: the columns in use).
+//! Removing row j from the rows above keeps them zero before min(first[i], first[j]), so both
+//! products run over columns [first[j], m) only: for A_d U with A_d upper triangular outside a
+//! small leading block (the drag-free attitude chain in its U-D order) that is about half of the
+//! dense work. The skipped terms are exact zeros.
+//! Only the first n rows take part (the others are left alone, their D entries unset).
+template <int N, int M>
+void mwgs_ud(Mat<N, M>& W, const Eigen::Matrix<double, 1, M>& w, std::array<int, N> first, int n, int m,
+             UdFactors<N>& out) noexcept {
+  out.U.setIdentity();
+  double c[M];
+  double u[N];
+  for (int j = n - 1; j >= 0; --j) {
+    const int a = first[j];
+    double d = 0.0;
+    for (int k = a; k < m; ++k) {
+      c[k] = W(j, k) * w(k);  // w ∘ W_j
+      d += W(j, k) * c[k];
+    }
+    out.D(j) = d;
+    if (!(d > 0.0) || j == 0) continue;  // W_j is zero in the weighted norm: nothing to remove
+    for (int i = 0; i < j; ++i) u[i] = 0.0;
+    for (int k = a; k < m; ++k) {  // u = W_{0:j} c / d, column by column (contiguous)
+      const double* col = W.col(k).data();
+      for (int i = 0; i < j; ++i) u[i] += col[i] * c[k];
+    }
+    for (int i = 0; i < j; ++i) {
+      u[i] /= d;
+      out.U(i, j) = u[i];
+      first[i] = first[i] < a ? first[i] : a;
+    }
+    for (int k = a; k < m; ++k) {  // W_{0:j} −= u W_j
+      double* col = W.col(k).data();
+      const double wjk = col[j];
+      for (int i = 0; i < j; ++i) col[i] -= u[i] * wjk;
+    }
+  }
+}
+//! Dense W: every column of every row in use.
+template <int N, int M>
+void mwgs_ud(Mat<N, M>& W, const Eigen::Matrix<double, 1, M>& w, UdFactors<N>& out) noexcept {
+  std::array<int, N> first{};
+  mwgs_ud<N, M>(W, w, first, N, M, out);
+}
+
+//! Agee–Turner rank-one modification (Bierman 1977 §V.4; Thornton 1976): (U, D) ← the U-D factors
+//! of U D Uᵀ + c a aᵀ for c ≥ 0, in place; `a` is used as scratch. Columns from the last:
+//!   d̄_j = d_j + c_j a_j²,  b_j = c_j / d̄_j,  c_{j−1} = d_j b_j,  a_{0:j} −= a_j U(0:j, j),
+//!   U(0:j, j) += b_j a_j a_{0:j}
+//! With c ≥ 0 every d̄_j ≥ d_j ≥ 0 and c_j ≥ 0 (no subtraction of variances: the stable case).
+//! Columns where a_j = 0 change nothing and are skipped, so a vector with few nonzeros (a
+//! selector, the rows above a state) costs only those columns.
+template <int N>
+void agee_turner_update(UdFactors<N>& f, double c, Vec<N>& a) noexcept {
+  double* av = a.data();
+  for (int j = N - 1; j > 0 && c > 0.0; --j) {
+    const double v = av[j];
+    if (v == 0.0) continue;  // nothing of this column: d_j and c unchanged
+    const double d_new = f.D(j) + c * v * v;
+    const double b = c / d_new;
+    c = f.D(j) * b;
+    f.D(j) = d_new;
+    const double bv = b * v;
+    double* u = f.U.col(j).data();
+    for (int i = 0; i < j; ++i) {
+      av[i] -= v * u[i];
+      u[i] += bv * av[i];
+    }
+  }
+  if (c > 0.0) f.D(0) += c * av[0] * av[0];
+}
+
+//! Bierman's scalar measurement update (Bierman 1977 §V.3) of (U, D) for z = h x + v, var(v) = r
+//! > 0: updates the factors in place and writes the Kalman gain k (x⁺ = x + k (z − h x)). f = Uᵀhᵀ
+//! is given; entries before `first` must be zero (U upper triangular: first = the lowest index
+//! where h is nonzero), which skips the columns j < first, where the update changes nothing.
+//! α grows from r > 0, so every D_j stays ≥ 0. Returns α = h P hᵀ + r, the innovation variance.
+template <int N>
+double bierman_update(UdFactors<N>& f, const Vec<N>& fvec, double r, int first, Vec<N>& k) noexcept {
+  double b[N] = {};
+  double alpha = r;
+  for (int j = first; j < N; ++j) {
+    const double v = f.D(j) * fvec(j);
+    const double alpha_next = alpha + fvec(j) * v;
+    const double p = -fvec(j) / alpha;
+    f.D(j) *= alpha / alpha_next;
+    double* u = f.U.col(j).data();
+    for (int i = 0; i < j; ++i) {
+      const double uij = u[i];
+      u[i] = uij + b[i] * p;
+      b[i] += uij * v;
+    }
+    b[j] = v;
+    alpha = alpha_next;
+  }
+  for (int i = 0; i < N; ++i) k(i) = b[i] / alpha;
+  return alpha;
+}
+
+}  // namespace adcs
