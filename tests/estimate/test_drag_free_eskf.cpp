@@ -203,19 +203,20 @@ TEST(Covariance, PositivePivotsAgreesWithLdltAndKeepPsdOnlyProjectsIndefinite) {
 }
 
 // Found by tests/fuzz (fuzz_seed004): a non-finite output of block 2 was reported as block 1's
-// failure (singular here) instead of non_finite_input.
-TEST(DragFreeEskfJoseph, NonFiniteMeasurementIsReportedAsSuchWhateverTheBlocks) {
+// failure instead of non_finite_input (then in the Joseph form, whose block 1 could fail first).
+TEST(DragFreeEskf, NonFiniteMeasurementIsReportedAsSuchWhateverTheBlocks) {
   const adcs::DragFreeDiscrete d = discrete();
-  adcs::DragFreeEskfJoseph f(eskf_params(d));
-  const adcs::Mat<27, 27> minus_I = -adcs::Mat<27, 27>::Identity();  // C P Cᵀ + R < 0 in block 1
-  ASSERT_EQ(f.set_estimate(adcs::Vec<27>::Zero(), minus_I), Status::ok);
+  adcs::DragFreeEskf f(eskf_params(d));
+  ASSERT_EQ(f.predict(adcs::Vec<9>::Zero()), Status::ok);
+  const adcs::Mat<27, 27> P = f.covariance();
   adcs::Vec<9> Y = adcs::Vec<9>::Zero();
-  EXPECT_EQ(f.update(Y), Status::singular);  // block 1 cannot factor its innovation
   Y(4) = std::numeric_limits<double>::quiet_NaN();  // r_y: an output of block 2
   EXPECT_EQ(f.update(Y), Status::non_finite_input);
-  EXPECT_EQ(f.covariance(), minus_I);
+  EXPECT_EQ(f.covariance(), P);
 }
+}  // namespace
 
+namespace ADCS_UNITY_ID {
 // ---- issue 20: the U-D form (math/ud.hpp, EskfUd, DragFreeEskf) --------------------------------
 
 //! A random symmetric PSD n x n matrix of the given rank with eigenvalues spread over
@@ -445,7 +446,7 @@ TEST(DragFreeEskf, UdFormTracksTheExactRecursionWhereTheJosephFormLosesDigits) {
   const adcs::DragFreeDiscrete d = discrete();
   const adcs::DragFreeEskf::Params e = eskf_params(d);
   adcs::DragFreeEskf ud(e);
-  adcs::DragFreeEskfJoseph jo(e);
+  adcs::Eskf<27, 9, 9, 9> jo(e);  // the Joseph form (the two-block Joseph filter equals it, test above)
   const MQ A = e.A_d.cast<Qd>();
   const Eigen::Matrix<Qd, 27, 9> Bd = e.B_d.cast<Qd>();
   const Eigen::Matrix<Qd, 9, 27> C = e.C_d.cast<Qd>();
@@ -521,9 +522,9 @@ TEST(DragFreeEskf, UdFormTracksTheExactRecursionWhereTheJosephFormLosesDigits) {
 #endif
 
 // Robustness (issue 20): covariances with condition numbers up to 1e14, near-singular measurement
-// noise and saturated accelerometer samples in a row. The U-D filter stays finite with D >= 0
-// (PSD by construction) on every step; the Joseph form runs the same data (its projections are
-// counted: it needs them here).
+// noise and saturated accelerometer samples in a row (fused every sample). The U-D filter stays
+// finite with D >= 0 (PSD by construction) on every step; the Joseph form (Eskf<27>, without the
+// fusion) runs the same data and its projections are counted: it needs them here.
 TEST(DragFreeEskf, StaysFiniteAndPsdOnIllConditionedCovariancesAndNoise) {
   const adcs::DragFreeParams pl;
   const adcs::DragFreeDiscrete d = discrete();
@@ -535,15 +536,15 @@ TEST(DragFreeEskf, StaysFiniteAndPsdOnIllConditionedCovariancesAndNoise) {
       adcs::DragFreeEskf::Params e = eskf_params(d);
       e.R *= r_scale;
       adcs::DragFreeEskf ud(e);
-      adcs::DragFreeEskfJoseph jo(e);
+      adcs::Eskf<27, 9, 9, 9> jo(e);
       ASSERT_EQ(ud.status(), Status::ok);
-      std::vector<adcs::SaturatedEsf> a2u, a2j;
-      for (int j = 0; j < 3; ++j) a2u.emplace_back(esf_params(j)), a2j.emplace_back(esf_params(j));
+      std::vector<adcs::SaturatedEsf> a2;
+      for (int j = 0; j < 3; ++j) a2.emplace_back(esf_params(j));
       // A start with a condition number 10^decades in each block (random eigenvectors).
       adcs::Mat<27, 27> P0 = adcs::Mat<27, 27>::Zero();
       const adcs::Mat<18, 18> P1 = 1e-2 * random_psd<18>(gen, 18, decades);
       const adcs::Mat<9, 9> P2 = 1e-2 * random_psd<9>(gen, 9, decades);
-      const adcs::FilterPartition<18, 6> part = adcs::drag_free_attitude_partition();
+      const adcs::FilterPartition<18, 6> part = adcs::drag_free_attitude_partition_ud();
       for (int i = 0; i < 18; ++i)
         for (int j = 0; j < 18; ++j) P0(part.states[i], part.states[j]) = P1(i, j);
       for (int i = 0; i < 9; ++i)
@@ -554,18 +555,13 @@ TEST(DragFreeEskf, StaysFiniteAndPsdOnIllConditionedCovariancesAndNoise) {
         adcs::Vec<9> u, Y;
         for (int i = 0; i < 9; ++i) u(i) = 1e-4 * N01(gen), Y(i) = 1e-8 * N01(gen);
         ASSERT_EQ(ud.predict(u), Status::ok) << decades << " " << k;
-        ASSERT_TRUE(adcs::usable(jo.predict(u)));
-        for (int j = 0; j < 3; ++j) {
-          ASSERT_EQ(a2u[j].predict(u(3 + j)), Status::ok);
-          ASSERT_EQ(a2j[j].predict(u(3 + j)), Status::ok);
-        }
+        (void)jo.predict(u);
+        for (int j = 0; j < 3; ++j) ASSERT_EQ(a2[j].predict(u(3 + j)), Status::ok);
         ASSERT_EQ(ud.update(Y), Status::ok) << decades << " " << k;
         (void)jo.update(Y);
         for (int j = 0; j < 3; ++j) {  // saturated in a row: every reading at the range's upper bound
-          ASSERT_TRUE(adcs::usable(a2u[j].update(pl.accel_max, u(3 + j))));
-          ASSERT_TRUE(adcs::usable(a2j[j].update(pl.accel_max, u(3 + j))));
-          ASSERT_EQ(adcs::fuse_axis(ud, a2u[j], j), Status::ok) << decades << " " << k;
-          (void)adcs::fuse_axis(jo, a2j[j], j);
+          ASSERT_TRUE(adcs::usable(a2[j].update(pl.accel_max, u(3 + j))));
+          ASSERT_EQ(adcs::fuse_axis(ud, a2[j], j), Status::ok) << decades << " " << k;
         }
         ASSERT_TRUE(adcs::all_finite(ud.state()));
         ASSERT_GE(ud.block1().factors().D.minCoeff(), 0.0);
@@ -579,6 +575,7 @@ TEST(DragFreeEskf, StaysFiniteAndPsdOnIllConditionedCovariancesAndNoise) {
     }
   }
   std::printf("Joseph-form projections on the same data: %ld\n", joseph_projections);
+  EXPECT_GT(joseph_projections, 0);
 }
 }  // namespace
 
