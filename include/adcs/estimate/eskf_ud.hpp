@@ -176,7 +176,7 @@ class EskfUd {
       Vec<N> g = G_.col(k);
       agee_turner_update<N>(out.f, wk, g);
     }
-    if (!all_finite(out.x) || !all_finite(out.f.U) || !all_finite(out.f.D)) return Status::out_of_range;
+    if (!all_finite(out.x) || !representable(out.f)) return Status::out_of_range;
     out.theta = theta;
     return Status::ok;
   }
@@ -198,7 +198,7 @@ class EskfUd {
       bierman_update<N>(out.f, fv, Rf_.D(i), first_[i], k);
       out.x += k * innovation;
     }
-    if (!all_finite(out.x) || !all_finite(out.f.U) || !all_finite(out.f.D)) return Status::out_of_range;
+    if (!all_finite(out.x) || !representable(out.f)) return Status::out_of_range;
     out.theta = -1.0;
     return Status::ok;
   }
@@ -229,7 +229,7 @@ class EskfUd {
   }
   [[nodiscard]] Status estimate_candidate(const State& x, const Covariance& P, Candidate& out) const noexcept {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
-    if (!symmetric<N>(P) || !ud_factorize<N>(P, out.f)) return Status::invalid_parameter;
+    if (!symmetric<N>(P) || !ud_factorize<N>(P, out.f) || !representable(out.f)) return Status::invalid_parameter;
     out.x = x;
     out.theta = -1.0;
     return Status::ok;
@@ -241,8 +241,8 @@ class EskfUd {
   //! Σ_j D_j c_j c_jᵀ + Σ_b D_o,b (Γᵀ U_o,b)(Γᵀ U_o,b)ᵀ with Ũ = U whose rows and columns idx are
   //! those of I and D̃_idx = 0, and the sums are Agee–Turner rank-one updates (non-negative
   //! weights: PSD by construction, no factorisation of a formed P). invalid_parameter for bad or
-  //! repeated indices or a P_o that is not symmetric PSD, non_finite_input for non-finite values;
-  //! nothing changes then.
+  //! repeated indices or a P_o that is not symmetric PSD, non_finite_input for non-finite values,
+  //! out_of_range for a result beyond double's range (representable); nothing changes then.
   template <int K>
   [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
     for (int a = 0; a < K; ++a) {
@@ -253,34 +253,50 @@ class EskfUd {
     if (!all_finite(x_o) || !all_finite(P_o)) return Status::non_finite_input;
     UdFactors<K> fo = UdFactors<K>::zero();
     if (!symmetric<K>(P_o) || !ud_factorize<K>(P_o, fo)) return Status::invalid_parameter;
+    Factors f = f_;
     Mat<N, K> c;
     Vec<K> d;
     for (int a = 0; a < K; ++a) {
-      c.col(a) = f_.U.col(idx[a]);
-      d(a) = f_.D(idx[a]);
+      c.col(a) = f.U.col(idx[a]);
+      d(a) = f.D(idx[a]);
     }
     for (int a = 0; a < K; ++a) {  // E: rows idx of c and of U; columns idx of U become e_j
       c.row(idx[a]).setZero();
-      f_.U.row(idx[a]).setZero();
-      f_.U.col(idx[a]).setZero();
-      f_.U(idx[a], idx[a]) = 1.0;
-      f_.D(idx[a]) = 0.0;
+      f.U.row(idx[a]).setZero();
+      f.U.col(idx[a]).setZero();
+      f.U(idx[a], idx[a]) = 1.0;
+      f.D(idx[a]) = 0.0;
     }
     Vec<N> v;
     for (int a = 0; a < K; ++a) {  // + D_j c_j c_jᵀ
       v = c.col(a);
-      agee_turner_update<N>(f_, d(a), v);
+      agee_turner_update<N>(f, d(a), v);
     }
     for (int b = 0; b < K; ++b) {  // + Γᵀ P_o Γ
       v.setZero();
       for (int a = 0; a < K; ++a) v(idx[a]) = fo.U(a, b);
-      agee_turner_update<N>(f_, fo.D(b), v);
+      agee_turner_update<N>(f, fo.D(b), v);
     }
+    if (!representable(f)) return Status::out_of_range;  // nothing changed
+    f_ = f;
     for (int a = 0; a < K; ++a) x_(idx[a]) = x_o(a);
     return Status::ok;
   }
 
  private:
+  //! The factors are finite and so is P = U D Uᵀ: every P_ii = Σ_k U_ik² D_k is (then so is every
+  //! P_ij, |P_ij| ≤ √(P_ii P_jj), and each partial sum of it by Cauchy–Schwarz). Finite factors
+  //! can still describe a P beyond DBL_MAX (found by fuzz_seed004): such a step is refused.
+  static bool representable(const Factors& f) noexcept {
+    if (!all_finite(f.U) || !all_finite(f.D)) return false;
+    for (int i = 0; i < N; ++i) {
+      double p_ii = 0.0;
+      for (int k = i; k < N; ++k) p_ii += f.U(i, k) * f.U(i, k) * f.D(k);
+      if (!std::isfinite(p_ii)) return false;
+    }
+    return true;
+  }
+
   //! G and its weights: B_e's columns with q_i > 0 (weight 4 l q_i, times 1 + 1/θ per step) and
   //! B_d U_s's with d_s,i > 0 (weight d_s,i); all-zero columns (another block's) are left out.
   //! False when more than NG remain.

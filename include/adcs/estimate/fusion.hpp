@@ -38,7 +38,8 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
 }
 
 //! Algorithm 3 for one axis: both filters leave with the fused estimate. non_finite_input
-//! (nothing changed) if either filter holds a non-finite estimate, invalid_parameter (nothing
+//! (nothing changed) if either filter holds a non-finite estimate, out_of_range (nothing changed)
+//! when Algorithm 1's fused covariance would exceed double's range, invalid_parameter (nothing
 //! changed) for a bad axis or a refused filter (status() != ok: it has no valid estimate to give
 //! or to receive).
 //! A template only so that including this header instantiates nothing (see detail::DragFreeEskf);
@@ -68,7 +69,8 @@ template <class Alg1 = DragFreeEskf, class Alg2 = SaturatedEsf>
     keep_psd<3>(Po);
   }
   if (!all_finite(Xo) || !all_finite(Po) || !all_finite(x1) || !all_finite(P1s)) return Status::non_finite_input;
-  if (alg1.template replace_substate<3>(idx, Xo, Po) != Status::ok) return Status::non_finite_input;  // seed 004 eqs. (40)-(41)
+  const Status s1 = alg1.template replace_substate<3>(idx, Xo, Po);  // seed 004 eqs. (40)-(41)
+  if (s1 != Status::ok) return s1;  // the U-D filter: out_of_range when the fused P is beyond double's range
   return alg2.set_estimate(Xo, Po);                          // seed 004 eqs. (42)-(43)
 }
 
