@@ -106,10 +106,64 @@ Status estimator_sample(Filter& f, const In& in, EskfOutput<N>& out, EskfDiagnos
   }
   return usable(sp) ? su : sp;
 }
+
+//! What both forms of Algorithm 1 (Eskf, EskfUd) do with their two-phase interface: each public
+//! operation computes a candidate from the current estimate and applies it only when it succeeded,
+//! so a refused predict(), update() or set_estimate() changes nothing. Derived provides status(),
+//! params(), theta_fixed(), propagate(), propagated_trace(), q1_trace(), predict_candidate(),
+//! update_candidate(), estimate_candidate(), accept() and its Candidate.
+template <class Derived, int N, int NU, int NL, int NY>
+class CandidateFilter {
+ public:
+  //! One sample: predict(in.u, in.delta_f_nominal), then update(in.y) (estimator_sample).
+  [[nodiscard]] Status step(const EskfInput<NU, NL, NY>& in, EskfOutput<N>& out,
+                            EskfDiagnostics* diag = nullptr) noexcept {
+    return estimator_sample(self(), in, out, diag);
+  }
+
+  //! Time update with the applied input u_{k−1} and the nominal disturbance increment Δf̄
+  //! (default 0: the nominal model f̄ = 0 of spec §B.8 gives Ĝ = 0), θ_k from tr(A_d P A_dᵀ) and
+  //! tr Q1 (or θ*). non_finite_input / out_of_range leave the state untouched.   seed 004 eq. (9)
+  [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
+    Derived& d = self();
+    if (d.status() != Status::ok) return d.status();
+    const typename Derived::Propagation AP = d.propagate();
+    const double theta =
+        young_weight(d.params().theta_policy, d.theta_fixed(), d.propagated_trace(AP), d.q1_trace());
+    typename Derived::Candidate c;
+    const Status s = d.predict_candidate(u, delta_f_nominal, AP, theta, c);
+    if (s == Status::ok) d.accept(c);
+    return s;
+  }
+
+  //! Measurement update with Y_k (see Derived::update_candidate for the form and its statuses);
+  //! a refused update leaves the state untouched.   Algorithm 1 measurement update
+  [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
+    Derived& d = self();
+    if (d.status() != Status::ok) return d.status();
+    typename Derived::Candidate c;
+    const Status s = d.update_candidate(Y, c);
+    if (s == Status::ok) d.accept(c);
+    return s;
+  }
+
+  //! Overwrites the estimate (fusion, Algorithm 3) after Derived::estimate_candidate's check;
+  //! nothing changes when it refuses.
+  [[nodiscard]] Status set_estimate(const Vec<N>& x, const Mat<N, N>& P) noexcept {
+    Derived& d = self();
+    typename Derived::Candidate c;
+    const Status s = d.estimate_candidate(x, P, c);
+    if (s == Status::ok) d.accept(c);
+    return s;
+  }
+
+ private:
+  Derived& self() noexcept { return static_cast<Derived&>(*this); }
+};
 }  // namespace detail
 
 template <int N, int NU, int NL, int NY>
-class Eskf {
+class Eskf : public detail::CandidateFilter<Eskf<N, NU, NL, NY>, N, NU, NL, NY> {
  public:
   using Params = EskfParams<N, NU, NL, NY>;
   using Input = EskfInput<NU, NL, NY>;
@@ -141,10 +195,9 @@ class Eskf {
   const Params& params() const noexcept { return p_; }
   double period_s() const noexcept { return p_.period_s; }
 
-  //! One sample: predict(in.u, in.delta_f_nominal), then update(in.y) (detail::estimator_sample).
-  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
-    return detail::estimator_sample(*this, in, out, diag);
-  }
+  //! step(), predict(), update(), set_estimate(): detail::CandidateFilter.
+  //! θ* = √(tr Q1 / tr P_0), the fixed θ of ThetaPolicy::fixed_initial.
+  double theta_fixed() const noexcept { return theta_fixed_; }
 
   //! X̂ = X̂_0, P = P_0, counters cleared.
   void reset() noexcept {
@@ -152,30 +205,6 @@ class Eskf {
     P_ = p_.P0;
     theta_ = 0.0;
     projections_ = 0;
-  }
-
-  //! Time update with the applied input u_{k−1} and the nominal disturbance increment Δf̄
-  //! (default 0: the nominal model f̄ = 0 of spec §B.8 gives Ĝ = 0). non_finite_input leaves
-  //! the state untouched.   Algorithm 1 time update, seed 004 eq. (9)
-  [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
-    if (status_ != Status::ok) return status_;
-    const Covariance APA = propagated_covariance();
-    Candidate c;
-    const Status s = predict_candidate(u, delta_f_nominal, APA, young_weight<N>(p_.theta_policy, theta_fixed_, APA, Q1_), c);
-    if (s == Status::ok) accept(c);
-    return s;
-  }
-
-  //! Measurement update with Y_k (Joseph form). non_finite_input / singular (C P Cᵀ + R not
-  //! positive definite) / out_of_range (overflow) leave the state untouched. (singular, not
-  //! ill_conditioned: that status is usable(), "a regularised result was returned", and nothing
-  //! is returned here.)   Algorithm 1 measurement update
-  [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
-    if (status_ != Status::ok) return status_;
-    Candidate c;
-    const Status s = update_candidate(Y, c);
-    if (s == Status::ok) accept(c);
-    return s;
   }
 
   // ---- Two-phase form, for filters composed of several Eskf blocks (PartitionedEskf): each
@@ -189,9 +218,8 @@ class Eskf {
     bool projected = false;
   };
 
-  //! A_d P A_dᵀ from the current P (the first half of the time update; θ_k is taken from it).
-  Covariance propagated_covariance() const noexcept { return sandwich_A(P_); }
-  //! The block interface of PartitionedFilter: the first half of the time update and its trace.
+  //! A_d P A_dᵀ from the current P (the first half of the time update; θ_k is taken from it) and
+  //! its trace: the block interface of PartitionedFilter and of detail::CandidateFilter.
   using Propagation = Covariance;
   Propagation propagate() const noexcept { return sandwich_A(P_); }
   static double propagated_trace(const Propagation& APA) noexcept { return APA.trace(); }
@@ -212,7 +240,10 @@ class Eskf {
     return Status::ok;
   }
 
-  //! The measurement update (see update). Joseph form, expanded, with W = K S_y − P Cᵀ:
+  //! The measurement update (update()). non_finite_input / singular (C P Cᵀ + R not positive
+  //! definite) / out_of_range (overflow) change nothing. (singular, not ill_conditioned: that
+  //! status is usable(), "a regularised result was returned", and nothing is returned here.)
+  //! Joseph form, expanded, with W = K S_y − P Cᵀ:
   //!   (I−KC)P(I−KC)ᵀ + KRKᵀ = P − K(PCᵀ)ᵀ − (PCᵀ)Kᵀ + K S_y Kᵀ = P − K(PCᵀ)ᵀ + W Kᵀ
   //! (exact for any K; W is the gain's residual, ~0 for the optimal K). K = P Cᵀ S_y⁻¹ by two
   //! triangular solves with the Cholesky factor of S_y (never an inverse); only the lower
@@ -263,14 +294,8 @@ class Eskf {
   //! How many times a covariance had to be projected back onto the PSD cone.
   long psd_projections() const noexcept { return projections_; }
 
-  //! Overwrites the estimate (fusion, Algorithm 3). Rejects non-finite values (nothing changed).
-  [[nodiscard]] Status set_estimate(const State& x, const Covariance& P) noexcept {
-    Candidate c;
-    const Status s = estimate_candidate(x, P, c);
-    if (s == Status::ok) accept(c);
-    return s;
-  }
-  //! set_estimate's check, as a candidate (PartitionedFilter sets both blocks or neither).
+  //! set_estimate's check, as a candidate (PartitionedFilter sets both blocks or neither):
+  //! non-finite values are refused (non_finite_input).
   [[nodiscard]] Status estimate_candidate(const State& x, const Covariance& P, Candidate& out) const noexcept {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
     out.x = x;

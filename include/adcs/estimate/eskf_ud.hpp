@@ -46,7 +46,7 @@ namespace adcs {
 //! NG noise columns (B_e columns with q_i > 0 plus B_d U_s columns with d_s,i > 0; construction
 //! refuses more).
 template <int N, int NU, int NL, int NY, int NG = NL + NU>
-class EskfUd {
+class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, NL, NY> {
  public:
   using Params = EskfParams<N, NU, NL, NY>;
   using Input = EskfInput<NU, NL, NY>;
@@ -90,10 +90,9 @@ class EskfUd {
   const Params& params() const noexcept { return p_; }
   double period_s() const noexcept { return p_.period_s; }
 
-  //! One sample: predict(in.u, in.delta_f_nominal), then update(in.y) (detail::estimator_sample).
-  [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
-    return detail::estimator_sample(*this, in, out, diag);
-  }
+  //! step(), predict(), update(), set_estimate(): detail::CandidateFilter.
+  //! θ* = √(tr Q1 / tr P_0), the fixed θ of ThetaPolicy::fixed_initial.
+  double theta_fixed() const noexcept { return theta_fixed_; }
 
   //! X̂ = X̂_0, P = P_0 (its factors, computed once at construction), θ cleared.
   void reset() noexcept {
@@ -102,29 +101,7 @@ class EskfUd {
     theta_ = 0.0;
   }
 
-  //! Time update (Eskf::predict). non_finite_input leaves the state untouched.   seed 004 eq. (9)
-  [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
-    if (status_ != Status::ok) return status_;
-    const Propagation AU = propagate();
-    Candidate c;
-    const Status s = predict_candidate(
-        u, delta_f_nominal, AU, young_weight(p_.theta_policy, theta_fixed_, propagated_trace(AU), q1_trace_), c);
-    if (s == Status::ok) accept(c);
-    return s;
-  }
-
-  //! Measurement update with Y_k (Bierman, output by output). non_finite_input / out_of_range
-  //! (overflow) leave the state untouched. The innovation variances are ≥ the decorrelated R's
-  //! D_R > 0, so there is no singular case.   Algorithm 1 measurement update
-  [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
-    if (status_ != Status::ok) return status_;
-    Candidate c;
-    const Status s = update_candidate(Y, c);
-    if (s == Status::ok) accept(c);
-    return s;
-  }
-
-  // ---- Two-phase form (PartitionedFilter), as Eskf's.
+  // ---- Two-phase form (detail::CandidateFilter, PartitionedFilter), as Eskf's.
   struct Candidate {
     State x;
     Factors f;
@@ -181,7 +158,9 @@ class EskfUd {
     return Status::ok;
   }
 
-  //! The measurement update: z = U_R⁻¹ Y, then one Bierman update per row of C̃.
+  //! The measurement update (update()): z = U_R⁻¹ Y, then one Bierman update per row of C̃.
+  //! non_finite_input / out_of_range (overflow) change nothing. The innovation variances are ≥ the
+  //! decorrelated R's D_R > 0, so there is no singular case.   Algorithm 1 measurement update
   [[nodiscard]] Status update_candidate(const Vec<NY>& Y, Candidate& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(Y)) return Status::non_finite_input;
@@ -219,14 +198,8 @@ class EskfUd {
   //! Always 0: the factored covariance never leaves the PSD cone (Eskf counts its projections).
   long psd_projections() const noexcept { return 0; }
 
-  //! Overwrites the estimate. non_finite_input for non-finite values; invalid_parameter for a P
-  //! that is not symmetric PSD (it has no U-D factors); nothing changes in either case.
-  [[nodiscard]] Status set_estimate(const State& x, const Covariance& P) noexcept {
-    Candidate c;
-    const Status s = estimate_candidate(x, P, c);
-    if (s == Status::ok) accept(c);
-    return s;
-  }
+  //! set_estimate's check: non_finite_input for non-finite values; invalid_parameter for a P that
+  //! is not symmetric PSD (it has no U-D factors).
   [[nodiscard]] Status estimate_candidate(const State& x, const Covariance& P, Candidate& out) const noexcept {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
     if (!symmetric<N>(P) || !ud_factorize<N>(P, out.f) || !representable(out.f)) return Status::invalid_parameter;
