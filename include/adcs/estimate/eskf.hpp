@@ -107,6 +107,19 @@ Status estimator_sample(Filter& f, const In& in, EskfOutput<N>& out, EskfDiagnos
   return usable(sp) ? su : sp;
 }
 
+//! replace_substate's input check (both forms): indices distinct and in [0, N) (invalid_parameter),
+//! values finite (non_finite_input).
+template <int N, int K>
+Status substate_check(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
+  for (int a = 0; a < K; ++a) {
+    if (idx[a] < 0 || idx[a] >= N) return Status::invalid_parameter;
+    for (int b = 0; b < a; ++b)
+      if (idx[a] == idx[b]) return Status::invalid_parameter;
+  }
+  if (!all_finite(x_o) || !all_finite(P_o)) return Status::non_finite_input;
+  return Status::ok;
+}
+
 //! What both forms of Algorithm 1 (Eskf, EskfUd) do with their two-phase interface: each public
 //! operation computes a candidate from the current estimate and applies it only when it succeeded,
 //! so a refused predict(), update() or set_estimate() changes nothing. Derived provides status(),
@@ -310,12 +323,7 @@ class Eskf : public detail::CandidateFilter<Eskf<N, NU, NL, NY>, N, NU, NL, NY> 
   //! (invalid_parameter) and the values finite (non_finite_input); nothing changes otherwise.
   template <int K>
   [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
-    for (int a = 0; a < K; ++a) {
-      if (idx[a] < 0 || idx[a] >= N) return Status::invalid_parameter;
-      for (int b = 0; b < a; ++b)
-        if (idx[a] == idx[b]) return Status::invalid_parameter;
-    }
-    if (!all_finite(x_o) || !all_finite(P_o)) return Status::non_finite_input;
+    if (const Status s = detail::substate_check<N, K>(idx, x_o, P_o); s != Status::ok) return s;
     for (int a = 0; a < K; ++a) {
       x_(idx[a]) = x_o(a);
       P_.row(idx[a]).setZero();

@@ -218,12 +218,7 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   //! out_of_range for a result beyond double's range (representable); nothing changes then.
   template <int K>
   [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
-    for (int a = 0; a < K; ++a) {
-      if (idx[a] < 0 || idx[a] >= N) return Status::invalid_parameter;
-      for (int b = 0; b < a; ++b)
-        if (idx[a] == idx[b]) return Status::invalid_parameter;
-    }
-    if (!all_finite(x_o) || !all_finite(P_o)) return Status::non_finite_input;
+    if (const Status s = detail::substate_check<N, K>(idx, x_o, P_o); s != Status::ok) return s;
     UdFactors<K> fo = UdFactors<K>::zero();
     if (!symmetric<K>(P_o) || !ud_factorize<K>(P_o, fo)) return Status::invalid_parameter;
     Factors f = f_;
