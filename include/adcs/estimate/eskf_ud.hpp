@@ -142,9 +142,13 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
     const Eigen::Matrix<double, 1, N> wD = wP * f_.D.transpose();
     const std::array<int, N> first{};
     mwgs_ud<N, N>(T, wD, first, lead_, lead_, out.f);  // T11 only (rows and columns < L)
-    for (int j = lead_; j < N; ++j) {
+    for (int j = lead_; j < N; ++j) {  // the columns mwgs_ud leaves to us, whole
       const double s_j = T(j, j);
-      out.f.U.col(j).head(j) = T.col(j).head(j) / s_j;
+      double* u = out.f.U.col(j).data();
+      const double* t = T.col(j).data();
+      for (int i = 0; i < j; ++i) u[i] = t[i] / s_j;
+      u[j] = 1.0;
+      for (int i = j + 1; i < N; ++i) u[i] = 0.0;
       out.f.D(j) = s_j * s_j * wD(j);
     }
     // + (1 + 1/θ) Q1 + Q2 = Σ_k w_k g_k g_kᵀ: one Agee–Turner rank-one update per noise column.
@@ -254,9 +258,11 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
  private:
   //! The factors are finite and so is P = U D Uᵀ: every P_ii = Σ_k U_ik² D_k is (then so is every
   //! P_ij, |P_ij| ≤ √(P_ii P_jj), and each partial sum of it by Cauchy–Schwarz). Finite factors
-  //! can still describe a P beyond DBL_MAX (found by fuzz_seed004): such a step is refused.
+  //! can still describe a P beyond DBL_MAX (found by fuzz_seed004): such a step is refused. The
+  //! sums also test the factors themselves: every D_k is in P_kk (U_kk = 1) and every U_ik, k > i,
+  //! in P_ii, where a NaN or an infinity gives NaN or ∞ even with D_k = 0 (∞ · 0 = NaN); the
+  //! entries below the diagonal are never written. So no separate finiteness pass over U and D.
   static bool representable(const Factors& f) noexcept {
-    if (!all_finite(f.U) || !all_finite(f.D)) return false;
     for (int i = 0; i < N; ++i) {
       double p_ii = 0.0;
       for (int k = i; k < N; ++k) p_ii += f.U(i, k) * f.U(i, k) * f.D(k);
