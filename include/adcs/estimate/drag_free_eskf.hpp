@@ -29,18 +29,27 @@ using DragFreeEskfBase =
                       EskfUd<9, kDragFreeInputs, kDragFreeInputs, 3, kDragFreeTranslationNoiseColumns>>;
 using DragFreeEskfJosephBase = PartitionedEskf<18, 9, kDragFreeInputs, kDragFreeInputs, 6, 3>;
 
-//! The attitude block: state indices 0-8 and 18-26, outputs φ_sc (0-2) and φ_rel (6-8).
-inline FilterPartition<18, 6> drag_free_attitude_partition() noexcept {
+namespace detail {
+//! The attitude block as two 9-state chains (φ, φ̇, T_D of the spacecraft or of the relative
+//! motion) and their two 3-output groups, each in the given order.
+inline FilterPartition<18, 6> attitude_partition(int first_chain, int second_chain, int first_outputs,
+                                                 int second_outputs) noexcept {
   FilterPartition<18, 6> part;
   for (int i = 0; i < 9; ++i) {
-    part.states[i] = DragFreeIndex::phi_sc + i;
-    part.states[9 + i] = DragFreeIndex::phi_rel + i;
+    part.states[i] = first_chain + i;
+    part.states[9 + i] = second_chain + i;
   }
   for (int i = 0; i < 3; ++i) {
-    part.outputs[i] = i;
-    part.outputs[3 + i] = 6 + i;
+    part.outputs[i] = first_outputs + i;
+    part.outputs[3 + i] = second_outputs + i;
   }
   return part;
+}
+}  // namespace detail
+
+//! The attitude block: state indices 0-8 and 18-26, outputs φ_sc (0-2) and φ_rel (6-8).
+inline FilterPartition<18, 6> drag_free_attitude_partition() noexcept {
+  return detail::attitude_partition(DragFreeIndex::phi_sc, DragFreeIndex::phi_rel, 0, 6);
 }
 
 //! The attitude block in the U-D filter's order: φ_rel, φ̇_rel, T_Dtm, φ_sc, φ̇_sc, T_Dsc. Each
@@ -49,16 +58,7 @@ inline FilterPartition<18, 6> drag_free_attitude_partition() noexcept {
 //! the 6 x 6 (φ_rel, φ̇_rel) oscillator and Thornton's re-factoring skips the zeros below the
 //! diagonal (mwgs_ud). Outputs φ_rel (6-8), then φ_sc (0-2).
 inline FilterPartition<18, 6> drag_free_attitude_partition_ud() noexcept {
-  FilterPartition<18, 6> part;
-  for (int i = 0; i < 9; ++i) {
-    part.states[i] = DragFreeIndex::phi_rel + i;
-    part.states[9 + i] = DragFreeIndex::phi_sc + i;
-  }
-  for (int i = 0; i < 3; ++i) {
-    part.outputs[i] = 6 + i;
-    part.outputs[3 + i] = i;
-  }
-  return part;
+  return detail::attitude_partition(DragFreeIndex::phi_rel, DragFreeIndex::phi_sc, 6, 0);
 }
 
 namespace detail {
