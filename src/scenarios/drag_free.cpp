@@ -298,9 +298,12 @@ struct LoopOutcome {
   double rx_max = 0.0, rx_mean = 0.0;
 };
 
-//! Where the Joseph-form covariance has recovered from P_0's collapse (issue 20): in the first
-//! samples the update shrinks P by ~1e13 and the Joseph form loses that many digits (measured
-//! against a long-double evaluation: 2.4e-2 in the estimates at 1 s, 1e-14 from ~30 s on).
+//! Where the Joseph-form covariance has mostly recovered from P_0's collapse (issue 20): in the
+//! first samples the update shrinks P by ~1e13 and the Joseph form loses that many digits. Against
+//! a quadruple-precision evaluation (test UdFormTracksTheExactRecursionWhereTheJosephFormLosesDigits)
+//! its estimates are off by 0.18 of a state's scale in 0-10 s, 3.2e-5 in 20-30 s, 2.8e-7 in
+//! 30-40 s and ~1e-8 from 40 s on; in dragfree-pid the rest of that transient on φ̇_rel,z (a state
+//! 370x smaller there than under ADRC) still gives 3.4e-5 relative just after 30 s.
 constexpr double kJosephTransient_s = 30.0;
 
 LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind, DragFreeXLaw x_law) {
