@@ -219,15 +219,22 @@ TEST(DragFreeEskf, NonFiniteMeasurementIsReportedAsSuchWhateverTheBlocks) {
 namespace ADCS_UNITY_ID {
 // ---- issue 20: the U-D form (math/ud.hpp, EskfUd, DragFreeEskf) --------------------------------
 
+//! A random orthogonal n x n matrix (Q of the QR of a Gaussian matrix). Dynamic size: one
+//! HouseholderQR for every n the tests use (fixed sizes compiled one per n, ~10 CPU-s of this
+//! file under ASan); below Eigen's blocking size both run the same unblocked loops.
+Eigen::MatrixXd random_orthogonal(std::mt19937_64& gen, int n) {
+  std::normal_distribution<double> N01;
+  Eigen::MatrixXd B(n, n);
+  for (int i = 0; i < n * n; ++i) B.data()[i] = N01(gen);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(B);
+  return qr.householderQ();
+}
+
 //! A random symmetric PSD n x n matrix of the given rank with eigenvalues spread over
 //! `decades` decades (condition number 10^decades on its range).
 template <int N>
 adcs::Mat<N, N> random_psd(std::mt19937_64& gen, int rank, double decades) {
-  std::normal_distribution<double> N01;
-  adcs::Mat<N, N> B;
-  for (int i = 0; i < N * N; ++i) B.data()[i] = N01(gen);
-  const Eigen::HouseholderQR<adcs::Mat<N, N>> qr(B);
-  const adcs::Mat<N, N> Q = qr.householderQ();
+  const adcs::Mat<N, N> Q = random_orthogonal(gen, N);
   adcs::Vec<N> ev = adcs::Vec<N>::Zero();
   for (int i = 0; i < rank; ++i) ev(i) = std::pow(10.0, -decades * i / std::max(rank - 1, 1));
   adcs::Mat<N, N> P = Q * ev.asDiagonal() * Q.transpose();

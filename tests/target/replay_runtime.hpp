@@ -312,14 +312,23 @@ inline void emit(char* line, char* end) {
   std::fwrite(line, 1, static_cast<std::size_t>(end - line), stdout);
 }
 
-//! main() of every replay program. rows: steps x width doubles. argv[1] == "cost" selects cost
-//! mode (target only). Returns 0, or 2 (construction/usage), 3 (no -icount), 4 (host self-check).
+//! main() of every replay program. rows: steps x width doubles. Argument "cost" selects cost
+//! mode (target only); "steps=K" (1 <= K) replays only the first min(K, steps) rows, which the
+//! icount test's second run uses to check determinism on a prefix at a tenth of the cost
+//! (run_replay_check.cmake). Returns 0, or 2 (construction/usage), 3 (no -icount), 4 (host
+//! self-check).
 inline int run(const Api& api, int argc, char** argv, const double* rows, int width, int steps) {
   static char line[4096];  // static: not stack
   static double values[128];
   bool cost = false;
-  for (int i = 1; i < argc; ++i)
+  for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "cost") == 0) cost = true;
+    if (std::strncmp(argv[i], "steps=", 6) == 0) {
+      const int k = std::atoi(argv[i] + 6);
+      if (k < 1) return 2;
+      if (k < steps) steps = k;
+    }
+  }
 #ifndef ADCS_REPLAY_TARGET
   if (!self_check_hexfloat()) return 4;
 #endif
