@@ -389,3 +389,10 @@ endif()
 # while the chain waits on a link (docs/DECISIONS.md, "CI under 20 minutes").
 add_custom_target(adcs_target_compile DEPENDS ${_outputs})
 add_dependencies(adcs_target_check adcs_target_compile)
+# After the bench fixtures (an ordering only: the checks do not use them). bench/ is a
+# subdirectory, so its units come after every top-level command in build.ninja and, left there,
+# its longest unit (~110 s) started last and ended the build alone; the checks are ~60 short
+# commands, which fill the cores at the end instead.
+if(TARGET adcs_step_entries)
+  add_dependencies(adcs_target_compile adcs_step_entries)
+endif()

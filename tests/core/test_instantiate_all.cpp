@@ -9,32 +9,12 @@
 // Only in the coverage build (preset "coverage" defines ADCS_INSTANTIATE_ALL): instantiating every
 // member of the 27-state filters, the SE(3)/VSCMG plants and the controllers costs g++ ~5 CPU
 // minutes for this one TU (measured, -fsyntax-only already), which the Release and ASan builds
-// of CI do not need: there the file is the test below alone.
-#include <gtest/gtest.h>
-
+// of CI do not need: there the file is empty. Its construction test
+// (InstantiateAll.DefaultParametersGiveTheDocumentedConstructionStatus) lives in
+// test_parameter_validation.cpp, which instantiates the same constructors anyway: here it cost
+// its unity batch ~30 clang+ASan CPU-s of its own (seed 001's gain design, the 27-state filter).
 #ifdef ADCS_INSTANTIATE_ALL
 #include "adcs/adcs.hpp"
-#else
-// The construction test alone needs only these; the whole library costs clang ~60 CPU-s more here
-// (the seed-004 headers' inline functions instantiate the drag-free filters in every unit that
-// includes them).
-#include "adcs/actuator/quantizer.hpp"
-#include "adcs/actuator/rw_allocation.hpp"
-#include "adcs/actuator/saturation.hpp"
-#include "adcs/actuator/vscmg_steering.hpp"
-#include "adcs/adapt/ppc.hpp"
-#include "adcs/adapt/rbf_compensator.hpp"
-#include "adcs/control/ftsmc_se3.hpp"
-#include "adcs/control/hybrid_adaptive.hpp"
-#include "adcs/control/mrp_pd.hpp"
-#include "adcs/control/pid.hpp"
-#include "adcs/control/prescribed_time_se3.hpp"
-#include "adcs/estimate/eskf.hpp"
-#include "adcs/estimate/drag_free_eskf.hpp"
-#include "adcs/plant/flexible_configurations.hpp"
-#include "adcs/plant/flexible_spacecraft.hpp"
-#include "adcs/plant/vscmg_configurations.hpp"
-#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 #endif
 
 #ifdef ADCS_INSTANTIATE_ALL
@@ -138,36 +118,3 @@ template VscmgDeviation<4, 3> rigid_mounting_deviation<4, 3>(const VscmgGeometry
                                                             const Mat<3, 3>&) noexcept;
 }  // namespace adcs
 #endif  // ADCS_INSTANTIATE_ALL
-
-namespace ADCS_UNITY_ID {
-using adcs::Status;
-
-// Construction status of the instantiated classes from their default parameters: those whose
-// defaults are a usable configuration report ok, those that need the caller's geometry, model or
-// gains (wheel axes, inertia, filter matrices, K_P, RBF layer, actuator limits, steering geometry,
-// nominal model, ζ, sample period) refuse it instead of building a
-// silently wrong object (docs/VALIDATION.md; tests/core/test_parameter_validation.cpp has one
-// test per refusal).
-TEST(InstantiateAll, DefaultParametersGiveTheDocumentedConstructionStatus) {
-  EXPECT_EQ(adcs::RwTorqueAllocator<4>(adcs::RwAllocationParams<4>{}).status(), Status::invalid_parameter);
-  EXPECT_EQ(adcs::Saturation<6>(adcs::SaturationParams<6>{}).status(), Status::invalid_parameter);  // limit
-  EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::seed003_quantizer_params()).status(), Status::ok);
-  EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::CompositeQuantizerParams<6>{}).status(), Status::ok);
-  EXPECT_EQ(adcs::SaturatedQuantizer<6>(adcs::SaturatedQuantizerParams<6>{}).status(), Status::invalid_parameter);
-  EXPECT_EQ((adcs::VscmgSteering<4, 0>(adcs::VscmgSteeringParams<4, 0>{}).status()), Status::invalid_parameter);
-  EXPECT_EQ(adcs::MrpPd<4>(adcs::MrpPdParams<4>{}).status(), Status::invalid_parameter);
-  EXPECT_EQ(adcs::PrescribedTimeSe3(adcs::PrescribedTimeSe3Params{}).status(), Status::invalid_parameter);  // ζ, J0
-  EXPECT_EQ(adcs::FtsmcSe3(adcs::FtsmcSe3Params{}).status(), Status::invalid_parameter);  // nominal model
-  EXPECT_EQ(adcs::Pid<1>(adcs::PidParams<1>{}).status(), Status::invalid_parameter);
-  EXPECT_EQ((adcs::Eskf<27, 9, 9, 9>(adcs::EskfParams<27, 9, 9, 9>{}).status()), Status::invalid_parameter);
-  EXPECT_EQ((adcs::RbfCompensator<6, 7, 3>(adcs::RbfCompensatorParams<6, 7, 3>{}).status()),
-            Status::invalid_parameter);
-  EXPECT_EQ(adcs::PrescribedPerformance<3>(adcs::PpcParams<3>{}).status(), Status::ok);
-  adcs::HybridAdaptive<4, 3>::Params hp;
-  hp.nominal = adcs::pyramid_4cmg_3rw_nominal();
-  EXPECT_EQ((adcs::HybridAdaptive<4, 3>(hp).status()), Status::ok);
-  EXPECT_EQ((adcs::FlexibleSpacecraft<2, 4>(adcs::flexible_params_seed002()).status()), Status::ok);
-}
-}  // namespace
-
-using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -910,6 +910,34 @@ TEST(ParameterValidationReference, SinusoidalRateDefaultIsSeed001AndRefusals) {
   EXPECT_EQ(ref.sigma_dot(12.0, sigma_d), Vec3::Zero());
 }
 
+
+// Construction status from default parameters: those whose defaults are a usable configuration
+// report ok, those that need the caller's geometry, model or gains (wheel axes, inertia, filter
+// matrices, K_P, RBF layer, actuator limits, steering geometry, nominal model, ζ, sample period)
+// refuse it instead of building a silently wrong object (docs/VALIDATION.md; the tests above
+// have one test per refusal). Here rather than in test_instantiate_all.cpp (now the coverage
+// build's explicit instantiation unit only): this file instantiates the same constructors.
+TEST(InstantiateAll, DefaultParametersGiveTheDocumentedConstructionStatus) {
+  EXPECT_EQ(adcs::RwTorqueAllocator<4>(adcs::RwAllocationParams<4>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ(adcs::Saturation<6>(adcs::SaturationParams<6>{}).status(), Status::invalid_parameter);  // limit
+  EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::seed003_quantizer_params()).status(), Status::ok);
+  EXPECT_EQ(adcs::CompositeQuantizer<6>(adcs::CompositeQuantizerParams<6>{}).status(), Status::ok);
+  EXPECT_EQ(adcs::SaturatedQuantizer<6>(adcs::SaturatedQuantizerParams<6>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ((adcs::VscmgSteering<4, 0>(adcs::VscmgSteeringParams<4, 0>{}).status()), Status::invalid_parameter);
+  EXPECT_EQ(adcs::MrpPd<4>(adcs::MrpPdParams<4>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ(adcs::PrescribedTimeSe3(adcs::PrescribedTimeSe3Params{}).status(), Status::invalid_parameter);  // ζ, J0
+  EXPECT_EQ(adcs::FtsmcSe3(adcs::FtsmcSe3Params{}).status(), Status::invalid_parameter);  // nominal model
+  EXPECT_EQ(adcs::Pid<1>(adcs::PidParams<1>{}).status(), Status::invalid_parameter);
+  EXPECT_EQ((adcs::Eskf<27, 9, 9, 9>(adcs::EskfParams<27, 9, 9, 9>{}).status()), Status::invalid_parameter);
+  EXPECT_EQ((adcs::RbfCompensator<6, 7, 3>(adcs::RbfCompensatorParams<6, 7, 3>{}).status()),
+            Status::invalid_parameter);
+  EXPECT_EQ(adcs::PrescribedPerformance<3>(adcs::PpcParams<3>{}).status(), Status::ok);
+  adcs::HybridAdaptive<4, 3>::Params hp;
+  hp.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  EXPECT_EQ((adcs::HybridAdaptive<4, 3>(hp).status()), Status::ok);
+  EXPECT_EQ((adcs::FlexibleSpacecraft<2, 4>(adcs::flexible_params_seed002()).status()), Status::ok);
+}
+
 }  // namespace
 
 using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
