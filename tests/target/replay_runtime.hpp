@@ -314,7 +314,7 @@ inline void emit(char* line, char* end) {
 
 //! main() of every replay program. rows: steps x width doubles. Argument "cost" selects cost
 //! mode (target only); "steps=K" (1 <= K) replays only the first min(K, steps) rows, which the
-//! icount test's second run uses to check determinism on a prefix at a tenth of the cost
+//! icount test's second run uses to check determinism on a prefix of 40 of the 400 steps
 //! (run_replay_check.cmake). Returns 0, or 2 (construction/usage), 3 (no -icount), 4 (host
 //! self-check).
 inline int run(const Api& api, int argc, char** argv, const double* rows, int width, int steps) {
