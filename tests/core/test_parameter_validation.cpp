@@ -910,7 +910,6 @@ TEST(ParameterValidationReference, SinusoidalRateDefaultIsSeed001AndRefusals) {
   EXPECT_EQ(ref.sigma_dot(12.0, sigma_d), Vec3::Zero());
 }
 
-
 // Construction status from default parameters: those whose defaults are a usable configuration
 // report ok, those that need the caller's geometry, model or gains (wheel axes, inertia, filter
 // matrices, K_P, RBF layer, actuator limits, steering geometry, nominal model, ζ, sample period)
