@@ -3,12 +3,16 @@
 
 usage: tools/callgrind-counts.py [--stepcount PATH] [--steps N] [--write JSON] [--check JSON]
 
-Runs build/bench/adcs-stepcount NAME N under
+Runs build/bench/adcs-stepcount --each N NAME... under
   valgrind --tool=callgrind --toggle-collect='*adcs_counted_steps*'
+                            --dump-after='*adcs_count_region_end*'
 for every step fixture (bench/step_fixtures.hpp, the same code adcs-bench times), so only the N
 steps are counted (not construction, warm-up or start-up), and prints instructions per step.
+All fixtures run in one process, each freshly constructed, and callgrind dumps after each
+counted region: one valgrind start-up (~0.6 s) instead of one per fixture and run.
   --write JSON  also writes the counts (this is how bench/callgrind-counts.json is made);
-  --check JSON  runs every fixture twice and fails (exit 1) unless both runs give the same count
+  --check JSON  runs every fixture twice (a fresh one each time) and fails (exit 1) unless both
+                runs give the same count
                 (determinism) and no count exceeds 1.25x the committed one (a regression gate:
                 the counts depend on the compiler and Eigen version, so they are compared with a
                 margin, not for equality). This is the ctest test `step_instruction_counts`.
@@ -44,20 +48,33 @@ def build_compiler(stepcount):
     raise RuntimeError(f"no CMakeCache.txt above {stepcount}: which compiler built it?")
 
 
-def count(stepcount, name, steps):
+def count_each(stepcount, names, steps):
+    """Instructions per step of each fixture in `names` (a name may repeat), in order."""
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "callgrind.out")
         cmd = ["valgrind", "--tool=callgrind", "--toggle-collect=*adcs_counted_steps*",
-               f"--callgrind-out-file={out}", stepcount, name, str(steps)]
+               "--dump-after=*adcs_count_region_end*", f"--callgrind-out-file={out}",
+               stepcount, "--each", str(steps)] + list(names)
         run = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         if run.returncode != 0:
-            raise RuntimeError(f"{' '.join(cmd)} failed:\n{run.stderr[-2000:]}")
-        with open(out, encoding="utf-8") as f:
-            for line in f:
-                m = re.match(r"^(?:totals|summary):\s+(\d+)", line)
-                if m:
-                    return int(m.group(1)) / steps
-    raise RuntimeError(f"no instruction total in the callgrind output of {name}")
+            raise RuntimeError(f"{' '.join(cmd[:8])} ... failed:\n{run.stderr[-2000:]}")
+        counts = []
+        # One dump per counted region, numbered from 1 in the order they ran; the last file
+        # (`out` itself, at exit) holds what ran after the last region: nothing is collected there.
+        for k in range(1, len(names) + 1):
+            path = f"{out}.{k}"
+            total = None
+            if os.path.exists(path):
+                with open(path, encoding="utf-8") as f:
+                    for line in f:
+                        m = re.match(r"^(?:totals|summary):\s+(\d+)", line)
+                        if m:
+                            total = int(m.group(1))
+                            break
+            if total is None:
+                raise RuntimeError(f"no instruction total for region {k} ({names[k - 1]}) in {path}")
+            counts.append(total / steps)
+        return counts
 
 
 def main(argv):
@@ -87,22 +104,23 @@ def main(argv):
 
     counts, failed = {}, False
     try:
-        for name in names:
-            n = count(args.stepcount, name, args.steps)
-            counts[name] = n
-            line = f"{name:<28} {n:10.1f} instructions/step"
-            if args.check:
-                again = count(args.stepcount, name, args.steps)
-                ref = committed.get(name)
-                ok = again == n and ref is not None and n <= REGRESSION_MARGIN * ref
-                failed = failed or not ok
-                line = (f"{'PASS' if ok else 'FAIL'}  {line}  (second run {again:.1f}; committed "
-                        f"{'none' if ref is None else f'{ref:.1f}'}, limit x{REGRESSION_MARGIN})")
-            print(line)
-            sys.stdout.flush()
+        runs = count_each(args.stepcount, [n for n in names for _ in range(2 if args.check else 1)],
+                          args.steps)
     except (OSError, RuntimeError) as e:
         print(f"callgrind-counts: {e}", file=sys.stderr)
         return 2
+    for i, name in enumerate(names):
+        n = runs[2 * i] if args.check else runs[i]
+        counts[name] = n
+        line = f"{name:<28} {n:10.1f} instructions/step"
+        if args.check:
+            again = runs[2 * i + 1]
+            ref = committed.get(name)
+            ok = again == n and ref is not None and n <= REGRESSION_MARGIN * ref
+            failed = failed or not ok
+            line = (f"{'PASS' if ok else 'FAIL'}  {line}  (second run {again:.1f}; committed "
+                    f"{'none' if ref is None else f'{ref:.1f}'}, limit x{REGRESSION_MARGIN})")
+        print(line)
     if args.write:
         doc = {"about": "instructions per step() on x86-64 (valgrind callgrind, Ir), generated by "
                         "tools/callgrind-counts.py --write; only the counted steps, see its docstring",

@@ -36,6 +36,11 @@
     }                                                                                     \
   } while (0)
 
+//! A harness's entry point: ADCS_FUZZ_ENTRY(fuzz_seed001) { ... } defines adcs_fuzz_seed001().
+//! The five harnesses are compiled in one unit (they instantiate the same controllers), and each
+//! fuzzer's LLVMFuzzerTestOneInput (fuzz_main.cpp) calls its own (tests/fuzz/CMakeLists.txt).
+#define ADCS_FUZZ_ENTRY(name) extern "C" int adcs_##name(const std::uint8_t* data, std::size_t size)
+
 namespace fuzz {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -26,7 +26,8 @@
 #include "component_list.hpp"  // tests/components
 #include "fuzz_common.hpp"
 
-namespace {
+// File-local, and named: the five harnesses are compiled in one unit (tests/fuzz/CMakeLists.txt).
+namespace ADCS_UNITY_ID {
 
 //! v in the scalar S. A double beyond float's range becomes ±Inf, as IEEE rounding does: a plain
 //! static_cast would be undefined behaviour there (UBSan's float-cast-overflow).
@@ -74,9 +75,10 @@ void fuzz_one(fuzz::Reader& r, int steps) {
   }
 }
 
-}  // namespace
+}  // namespace ADCS_UNITY_ID
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+ADCS_FUZZ_ENTRY(fuzz_components) {
+  using namespace ADCS_UNITY_ID;
   fuzz::Reader r(data, size);
   constexpr int kCount = static_cast<int>(std::tuple_size_v<adcs::test::FlightComponentList>);
   const int pick = r.u8() % kCount;

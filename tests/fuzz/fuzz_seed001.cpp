@@ -21,7 +21,8 @@
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "fuzz_common.hpp"
 
-namespace {
+// File-local, and named: the five harnesses are compiled in one unit (tests/fuzz/CMakeLists.txt).
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using adcs::Vec3;
 using Hybrid = adcs::HybridAdaptive<4, 3>;
@@ -306,9 +307,10 @@ void fuzz_mrp_pd(fuzz::Reader& r) {
     check_allocation(out.torque_B_Nm);
   }
 }
-}  // namespace
+}  // namespace ADCS_UNITY_ID
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+ADCS_FUZZ_ENTRY(fuzz_seed001) {
+  using namespace ADCS_UNITY_ID;
   fuzz::Reader r(data, size);
   switch (r.u8() % 3) {
     case 0: fuzz_hybrid(r); break;

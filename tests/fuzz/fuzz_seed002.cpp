@@ -24,7 +24,8 @@
 #include "adcs/reference/sinusoidal_euler.hpp"
 #include "fuzz_common.hpp"
 
-namespace {
+// File-local, and named: the five harnesses are compiled in one unit (tests/fuzz/CMakeLists.txt).
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using adcs::Vec3;
 constexpr int kMaxSteps = 12;
@@ -148,9 +149,10 @@ void run(Law& law, int config, fuzz::Reader& r) {
     last = out;
   }
 }
-}  // namespace
+}  // namespace ADCS_UNITY_ID
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+ADCS_FUZZ_ENTRY(fuzz_seed002) {
+  using namespace ADCS_UNITY_ID;
   fuzz::Reader r(data, size);
   const int law = r.u8() & 1;
   const int config = r.u8();

@@ -26,7 +26,8 @@
 #include "fuzz_common.hpp"
 #include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 
-namespace {
+// File-local, and named: the five harnesses are compiled in one unit (tests/fuzz/CMakeLists.txt).
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using adcs::Vec3;
 using adcs::Vec6;
@@ -239,9 +240,10 @@ void fuzz_law(int which, int config, fuzz::Reader& r) {
     check_sat_quantize(u, sc.limit, q);  // the flight chain: u → sat → Q → clip
   }
 }
-}  // namespace
+}  // namespace ADCS_UNITY_ID
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+ADCS_FUZZ_ENTRY(fuzz_seed003) {
+  using namespace ADCS_UNITY_ID;
   fuzz::Reader r(data, size);
   const int target = r.u8() % 3;
   const int config = r.u8();

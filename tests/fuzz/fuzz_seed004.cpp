@@ -22,7 +22,8 @@
 #include "adcs/estimate/fusion.hpp"
 #include "fuzz_common.hpp"
 
-namespace {
+// File-local, and named: the five harnesses are compiled in one unit (tests/fuzz/CMakeLists.txt).
+namespace ADCS_UNITY_ID {
 using adcs::Status;
 using adcs::Vec3;
 using Vec9 = adcs::Vec<9>;
@@ -399,9 +400,10 @@ void fuzz_pid(int config, fuzz::Reader& r) {
     last_good = out;
   }
 }
-}  // namespace
+}  // namespace ADCS_UNITY_ID
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+ADCS_FUZZ_ENTRY(fuzz_seed004) {
+  using namespace ADCS_UNITY_ID;
   fuzz::Reader r(data, size);
   const int target = r.u8() % 3;
   const int config = r.u8();
