@@ -81,6 +81,43 @@ endif()
 # each) now come before the ~55 short ones instead of after them, where they ended the build
 # alone (docs/DECISIONS.md, "CI under 20 minutes").
 file(MAKE_DIRECTORY ${_gen}/one_header)
+# With clang, adcs/core/types.hpp (Eigen/Core and Eigen/Geometry: ~2 of the ~2.3 CPU-s of each
+# check) is parsed once into a precompiled header, which the check of every header that includes
+# it, directly or through other adcs headers, loads first. That is what compiling such a header
+# alone does anyway: it includes types.hpp before it can name Eigen or an adcs type, and types.hpp
+# defines nothing that a header's own lines before that include could use unnoticed (each header
+# included on the way is checked alone too). The headers that do not reach types.hpp (status,
+# failure hook and policy, ...) are checked without it, so a missing standard include is not
+# masked by what Eigen includes (docs/DECISIONS.md, "CI under 20 minutes", item 23).
+set(_types_h adcs/core/types.hpp)
+set(_reach_types ${_types_h})
+set(_changed ON)
+while(_changed)
+  set(_changed OFF)
+  foreach(h IN LISTS ADCS_PUBLIC_HEADERS)
+    if(NOT h IN_LIST _reach_types)
+      file(STRINGS ${PROJECT_SOURCE_DIR}/include/${h} _incs REGEX "^#include \"adcs/")
+      foreach(i IN LISTS _incs)
+        string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" i "${i}")
+        if(i IN_LIST _reach_types)
+          list(APPEND _reach_types ${h})
+          set(_changed ON)
+          break()
+        endif()
+      endforeach()
+    endif()
+  endforeach()
+endwhile()
+set(_types_pch)
+if(_clang_arm)
+  set(_types_pch ${_gen}/one_header/types.hpp.pch)
+  add_custom_command(OUTPUT ${_types_pch}
+    COMMAND ${_clang_arm} -I${PROJECT_SOURCE_DIR}/include -isystem ${_eigen_inc}
+            -x c++-header ${PROJECT_SOURCE_DIR}/include/${_types_h} -o ${_types_pch}
+    DEPENDS ${PROJECT_SOURCE_DIR}/include/${_types_h}
+    IMPLICIT_DEPENDS CXX ${PROJECT_SOURCE_DIR}/include/${_types_h}
+    COMMENT "clang++ --target=arm-none-eabi: precompiled ${_types_h} for the header checks" VERBATIM)
+endif()
 foreach(h IN LISTS ADCS_PUBLIC_HEADERS)
   string(REPLACE "/" "__" stem ${h})
   string(REPLACE ".hpp" "" stem ${stem})
@@ -98,10 +135,16 @@ foreach(h IN LISTS ADCS_PUBLIC_HEADERS)
     set(_cxx ${_m7_cxx})
     set(_who ${_m7_who})
   endif()
+  set(_pch_args)
+  set(_pch_dep)
+  if(_types_pch AND h IN_LIST _reach_types AND NOT h STREQUAL _types_h AND NOT h STREQUAL "adcs/adcs.hpp")
+    set(_pch_args -include-pch ${_types_pch})
+    set(_pch_dep ${_types_pch})
+  endif()
   add_custom_command(OUTPUT ${stamp}
-    COMMAND ${_cxx} -I${PROJECT_SOURCE_DIR}/include -isystem ${_eigen_inc} -fsyntax-only ${tu}
+    COMMAND ${_cxx} ${_pch_args} -I${PROJECT_SOURCE_DIR}/include -isystem ${_eigen_inc} -fsyntax-only ${tu}
     COMMAND ${CMAKE_COMMAND} -E touch ${stamp}
-    DEPENDS ${tu} ${PROJECT_SOURCE_DIR}/include/${h}
+    DEPENDS ${tu} ${PROJECT_SOURCE_DIR}/include/${h} ${_pch_dep}
     IMPLICIT_DEPENDS CXX ${tu}
     COMMENT "${_who} -fsyntax-only (Cortex-M7) ${h}" VERBATIM)
   list(APPEND _outputs ${stamp})
