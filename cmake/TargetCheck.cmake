@@ -266,6 +266,12 @@ target_compile_options(adcs_replay_host_flags INTERFACE -ffp-contract=off)
 target_compile_definitions(adcs_replay_host_flags INTERFACE EIGEN_DONT_VECTORIZE)
 target_include_directories(adcs_replay_host_flags INTERFACE ${_tr} ${PROJECT_SOURCE_DIR}/src)  # scenarios/seed003_data.hpp
 target_link_libraries(adcs_replay_host_flags INTERFACE adcs::adcs adcs_warnings)
+# ADCS_SHORT_RUN_OPT (top-level CMakeLists.txt; tools/run-tests.sh sets -O0 for this tree): these
+# programs run ADCS_REPLAY_STEPS steps once, in milliseconds, and nothing else in their
+# executables runs a loop; -ffp-contract=off and no vectorisation make every optimisation level
+# give the same bits (the recorded inputs and expected outputs; docs/DECISIONS.md, "CI under 20
+# minutes", item 24).
+target_link_libraries(adcs_replay_host_flags INTERFACE adcs_short_run_options)
 # Seed 001's gain table (replay_gains_hybrid.hpp): designed on the host by design_gains.cpp, the
 # ground segment, and compiled into the hybrid System on every side, which builds its law from
 # it (HybridAdaptive(params, gains)) and so compiles no pole placement or Lyapunov solve: ~30 %

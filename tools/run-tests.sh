@@ -49,10 +49,13 @@ build=${1:-"$root/build"}
 # still compiles every flight header with -Werror: arm-none-eabi-g++ 12 (the host's g++
 # version) in the Cortex-M7 units and replays. The host C library (adcs_c) is built and tested
 # in the ASan tree (the C example, adcs_c_tests); here it would only be compiled (~40 CPU-s).
+# ADCS_SHORT_RUN_OPT=-O0: in this tree it reaches only the host side of the target replays (the
+# recorder, the gain design, the C example's reference and the host replays), which run a few
+# hundred steps; the bench, the scenarios it runs and the Cortex-M builds keep their -O2/-O3.
 phase configure cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_COMPILER=clang++-14 -DADCS_WERROR=ON \
   -DADCS_TESTS_FLIGHT=OFF -DADCS_TESTS_GROUND=OFF -DADCS_TESTS_CLAIMS=OFF -DADCS_BUILD_EXAMPLES=OFF \
-  -DADCS_BUILD_C=OFF
+  -DADCS_BUILD_C=OFF -DADCS_SHORT_RUN_OPT=-O0
 # The Cortex-M7 programs (ExternalProject, not in ALL) are built here with the rest rather than
 # inside ctest's target_compile_check, so the build phase shows their time and both cores share
 # them with the host objects.
