@@ -21,6 +21,21 @@ using adcs::sim::test::paper_verdict;
 const adcs::sim::Claim* claim(const RunResult& r, const std::string& prefix) {
   return adcs::sim::test::find_claim(r, prefix);
 }
+// The paper verdicts of items 2-7 on the paper's gains (dragfree-adrc), asserted on that run by
+// ClosedLoopChecklistItems2To9; the retuned loop must give the same ones. A table rather than a
+// second 3e5-step run in TunedLoopMeetsTheSpectrumOverTheWholeBand: each ctest test is its own
+// process, and that run is ~11 s of the sanitizer tree's ctest (docs/DECISIONS.md, "CI under 20
+// minutes", item 24).
+struct ItemVerdict {
+  const char* id;
+  const char* verdict;
+};
+constexpr ItemVerdict kPaperGainVerdicts[] = {
+    {"B.9-2", "reproduced"},  // Alg. 2 accumulates, Alg. 1 stable
+    {"B.9-3", "partly"},      // "worse later" only; "better early" is not seen on [0,100) s (as in PROTO)
+    {"B.9-4", "reproduced"},
+    {"B.9-6", "reproduced"},
+    {"B.9-7", "partly"}};  // reached and recovered, but phi_rel settles after the attitude does
 
 TEST(DragFree, SaturatedUpdateBeatsSkippingItem1) {
   const RunResult r = run("dragfree-estimators");
@@ -71,18 +86,15 @@ TEST(DragFree, ClosedLoopChecklistItems2To9) {
   EXPECT_EQ(metric(r, "psd_projections"), 0.0);  // issue 20: the U-D filter never projects
   expect_claims_hold(r);
   expect_rows_well_formed(r);
-  // Paper verdicts (issue 16), each against the paper's own words.
-  EXPECT_EQ(paper_verdict(r, "B.9-2"), "reproduced");  // Alg. 2 accumulates, Alg. 1 stable
+  // Paper verdicts (issue 16), each against the paper's own words (kPaperGainVerdicts).
+  for (const ItemVerdict& v : kPaperGainVerdicts) EXPECT_EQ(paper_verdict(r, v.id), v.verdict) << v.id;
+  // 2: Algorithm 1 does not accumulate.
   EXPECT_LE(metric(r, "alg1_pos_rmse_1000_5000"), 2.0 * metric(r, "alg1_pos_rmse_0_100"));
   EXPECT_LE(metric(r, "alg1_pos_rmse_100_1000"), 2.0 * metric(r, "alg1_pos_rmse_0_100"));
   // 3: "worse later" only; "better early" is not seen on [0,100) s (as in PROTO).
-  EXPECT_EQ(paper_verdict(r, "B.9-3"), "partly");
   EXPECT_GT(metric(r, "alg2_dist_rmse_0_100"), metric(r, "alg1_dist_rmse_0_100"));
-  EXPECT_EQ(paper_verdict(r, "B.9-4"), "reproduced");
-  EXPECT_EQ(paper_verdict(r, "B.9-6"), "reproduced");
   // 7: reached and recovered, but phi_rel settles (2 % of its peak) after the attitude does:
   // "adjusts quickly" is not shown.
-  EXPECT_EQ(paper_verdict(r, "B.9-7"), "partly");
   EXPECT_GT(metric(r, "rel_att_settle_2pct_s_step1"), metric(r, "att_settle_up_s_z"));
   // 8: the paper's "below 3e-14 across 1-30 mHz" is judged on the band max (every axis): the
   // ~11 mHz loop resonance exceeds it by more than x2 on each axis; our median criterion holds.
@@ -107,9 +119,7 @@ TEST(DragFree, TunedLoopMeetsTheSpectrumOverTheWholeBand) {
   EXPECT_NEAR(metric(r, "loop_resonance_Hz"), 0.011, 0.0005);
   EXPECT_NEAR(metric(r, "loop_noise_gain_peak_paper_kd"), 3.97, 0.05);
   EXPECT_LT(metric(r, "loop_noise_gain_peak_run_kd"), 1.3);
-  const RunResult base = run("dragfree-adrc");
-  for (const char* id : {"B.9-2", "B.9-3", "B.9-4", "B.9-6", "B.9-7"})
-    EXPECT_EQ(paper_verdict(r, id), paper_verdict(base, id)) << id;
+  for (const ItemVerdict& v : kPaperGainVerdicts) EXPECT_EQ(paper_verdict(r, v.id), v.verdict) << v.id;
   for (const auto& c : r.claims) EXPECT_TRUE(c.holds.value_or(true)) << c.claim << ": " << c.ours;
   const Claim* c8 = claim(r, "B.9-8");
   ASSERT_NE(c8, nullptr);
