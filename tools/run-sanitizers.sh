@@ -3,8 +3,9 @@
 # UndefinedBehaviorSanitizer (clang++-14), plus the libFuzzer harnesses (ADCS_FUZZ=ON: ctest label
 # fuzz, tests/fuzz/CMakeLists.txt): every unit, property, harness, CLI, parameter, foundation- and
 # fault-scenario, no-allocation and install-consumer test, and the papers' closed loops and their
-# claims (adcs_claim_tests; the scenario libraries without ASan, see below), with any sanitizer report fatal (halt_on_error,
-# -fno-sanitize-recover=undefined). Called by tools/run-tests.sh after the Release suite.
+# claims (adcs_claim_tests), with any sanitizer report fatal (halt_on_error,
+# -fno-sanitize-recover=undefined); the units of fixed-size flight code (the scenario libraries,
+# the vehicle loops, the flight unit tests) without ASan, see below. Called by tools/run-tests.sh after the Release suite.
 #   clang++-14, not g++: the same -O1 ASan+UBSan build of the Eigen-heavy tests compiles ~3-4x
 #        faster (measured per translation unit: g++ -O1 -g 138 s, clang++ -O1 -g 36 s), which is
 #        what lets the suite run in CI; it also puts a second compiler's warnings (-Werror) on
@@ -20,15 +21,19 @@
 #        arithmetic checks (overflow, float-cast, shifts, division, bounds, bool/enum,
 #        return/unreachable) stay on everywhere; the standalone fuzz campaigns
 #        (tools/run-fuzzers.sh) run the full UBSan.
-#   -O1 for the unit tests (ADCS_FLIGHT_TEST_OPT): they run milliseconds of flight code each;
-#        ~7 % less compile time than -O2. The no-allocation test is -O0 in every build.
-#   The scenario libraries (src/scenarios: the closed loops of the claim, fault and vehicle tests)
-#        without ASan, with UBSan, armed asserts and -D_GLIBCXX_ASSERTIONS
-#        (ADCS_SCENARIO_COMPILE_OPTIONS): ASan made the loops ~2.5x slower than the same code
-#        without sanitizers, and their hot path is fixed-size Eigen code on the stack, which the
-#        unit, no-allocation and fuzz tests run under ASan; an out-of-range index there is
-#        Eigen's armed assert, a container's is libstdc++'s. The harness (src/sim), the ground
-#        code and every test's own code keep ASan.
+#   -O1 for the unit tests that run loops (ADCS_FLIGHT_TEST_OPT), -O0 for the others
+#        (ADCS_SHORT_RUN_OPT): they run milliseconds of flight code each. The no-allocation test
+#        is -O0 in every build.
+#   The units whose code under test is fixed-size flight code on the stack, without ASan, with
+#        UBSan, armed asserts and -D_GLIBCXX_ASSERTIONS (ADCS_SCENARIO_COMPILE_OPTIONS through
+#        adcs_fixed_size_options): the scenario libraries (src/scenarios: the closed loops of the
+#        claim, fault and vehicle tests), the vehicle loops (src/vehicle/*_loop_*.cpp) and the
+#        flight unit tests. ASan made the loops ~2.5x slower than the same code without
+#        sanitizers and was ~20 % of the unit tests' compile time; an out-of-range index there
+#        is Eigen's armed assert, a fixed array's UBSan's bounds check, a container's
+#        libstdc++'s. ASan stays on every component's step() in the no-allocation and fuzz
+#        tests, on the C interface (its test and example), the harness (src/sim), the ground
+#        code (command line, campaigns, vehicle files) and the other tests' own code.
 #   No debug info (CMAKE_CXX_FLAGS_DEBUG empty): a report names each frame's function (symbol
 #        table); -gline-tables-only, which adds file:line, cost ~12 % of this tree's compile time
 #        (docs/DECISIONS.md, "CI under 20 minutes"). For file:line, reconfigure with
