@@ -49,12 +49,15 @@ SYSTEMS_M4F = {
                   "conversion (double rows to float: library calls), the law's step(), the allocation's step()",
     "ppc_f": "seed 002 PPATC PpcNeuralT<float> on the paper's flexible spacecraft, Cortex-M4F: row conversion "
              "(double rows to float: library calls), one step() (control/ppc_neural.hpp)",
+    "hybrid_f": "seed 001 hybrid adaptive HybridAdaptive<4, 3, float> on the A-REF configuration, Cortex-M4F: "
+                "row conversion (double rows to float: library calls), one step() (control/hybrid_adaptive.hpp)",
 }
 GOAL = 10000  # instructions per step (issue 7)
 # The stage that is the controller's own step() in Systems whose step() has more (the rest are
 # the desired state, quantisation, or estimators).
 CONTROLLER_STAGE = {"se3": "controller_step", "dragfree": "adrc_step", "attitude": "mrp_pd_step",
-                    "attitude_f": "mrp_pd_step", "ppc": "ppc_step", "ppc_f": "ppc_step"}
+                    "attitude_f": "mrp_pd_step", "ppc": "ppc_step", "ppc_f": "ppc_step",
+                    "hybrid_f": "hybrid_step"}
 QEMU_ARGS = ["-nographic", "-monitor", "none", "-serial", "none",
              "-semihosting-config", "enable=on,target=native", "-icount", "shift=0"]
 

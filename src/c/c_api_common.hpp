@@ -2,8 +2,9 @@
 // checks, the state layout (the C++ object at offset 0, a word written by init in the last four
 // bytes, so a step on a state that init never wrote is refused instead of running on garbage),
 // construction by placement new into the caller's storage, and the array conversions. One unit
-// per family group (adcs_c.cpp: status, MRP PD, wheel allocation; adcs_c_ppc.cpp: seed 002),
-// so a flight build compiles only the families it links. Private to src/c.
+// per family group (adcs_c.cpp: status, MRP PD, wheel allocation; adcs_c_ppc.cpp: seed 002;
+// adcs_c_hybrid.cpp: seed 001), so a flight build compiles only the families it links. Private
+// to src/c.
 #pragma once
 
 #include <cstdint>

@@ -16,10 +16,13 @@
 
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/c/adcs.h"
+#include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
+#include "adcs/plant/vscmg_configurations.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
+#include "adcs/reference/sinusoidal_rate.hpp"
 #include "alloc_guard.hpp"  // tests/nomalloc
 #include "counting_new.hpp"
 
@@ -351,6 +354,202 @@ TEST(CInterface, PpcRefusalsAndFailureCommands) {
   }
 }
 
+// ---- Seed 001: the hybrid adaptive law (adcs_hybrid43, adcs_hybrid43f, adcs_hybrid_design_gains)
+
+// Seed 001's closed-loop eigenvalues (seed001_axis_poles) as the C design call takes them.
+void seed001_poles(double re[3][2], double im[3][2]) {
+  const adcs::AxisPoles<3> poles = adcs::seed001_axis_poles();
+  for (int a = 0; a < 3; ++a)
+    for (int k = 0; k < 2; ++k) {
+      re[a][k] = poles[a][k].real();
+      im[a][k] = poles[a][k].imag();
+    }
+}
+
+// The A-REF law (nominal pyramid + 3 wheels, the paper's gains, T_c = 1 ms) through the C
+// parameter struct of scalar S, with K and P from the C design call, rounded once into S.
+template <class CParams>
+CParams hybrid_c_params() {
+  using S = std::remove_reference_t<decltype(CParams{}.period_s)>;
+  adcs::HybridAdaptiveParams<4, 3> d;
+  d.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  double re[3][2], im[3][2], Q[6][6], K[3][6], P[6][6];
+  seed001_poles(re, im);
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) Q[i][j] = d.Q_L(i, j);
+  EXPECT_EQ(adcs_hybrid_design_gains(re, im, Q, K, P), ADCS_STATUS_OK);
+  CParams cp{};
+  const adcs::VscmgGeometry<4, 3>& g = d.nominal;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      cp.A_cg[i][j] = static_cast<S>(g.A_cg(i, j));
+      cp.A_cs0[i][j] = static_cast<S>(g.A_cs0(i, j));
+      cp.A_ct0[i][j] = static_cast<S>(g.A_ct0(i, j));
+    }
+    for (int j = 0; j < 3; ++j) {
+      cp.A_ws[i][j] = static_cast<S>(g.A_ws(i, j));
+      cp.J_s[i][j] = static_cast<S>(g.J_s(i, j));
+    }
+    for (int j = 0; j < 6; ++j) cp.K[i][j] = static_cast<S>(K[i][j]);
+    cp.I_wws[i] = static_cast<S>(g.I_wws(i));
+    cp.H_I_n[i] = static_cast<S>(d.H_I_n(i));
+  }
+  for (int j = 0; j < 4; ++j) {
+    cp.I_cs[j] = static_cast<S>(g.I_cs(j));
+    cp.I_ct[j] = static_cast<S>(g.I_ct(j));
+    cp.I_cg[j] = static_cast<S>(g.I_cg(j));
+    cp.h_cw[j] = static_cast<S>(g.h_cw(j));
+  }
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      cp.P[i][j] = static_cast<S>(P[i][j]);
+      cp.Q_L[i][j] = static_cast<S>(Q[i][j]);
+    }
+  cp.alpha_F = static_cast<S>(d.alpha_F);
+  cp.alpha_G = static_cast<S>(d.alpha_G);
+  cp.beta_G = static_cast<S>(d.beta_G);
+  cp.delta_G = static_cast<S>(d.delta_G);
+  cp.period_s = static_cast<S>(d.period_s);
+  cp.steering_sigma_threshold = static_cast<S>(d.steering.sigma_threshold);
+  cp.steering_lambda_max = static_cast<S>(d.steering.lambda_max);
+  cp.steering_max_torque_error = static_cast<S>(d.steering.max_torque_error);
+  cp.adaptation_step = ADCS_ADAPTATION_EXPLICIT_EULER;
+  cp.max_step_gain = static_cast<S>(d.max_step_gain);
+  cp.on_failure = ADCS_FAILURE_SAFE_COMMAND;
+  return cp;
+}
+
+// Sample k of seed 001's reference (SinusoidalRateReference) with an attitude and rate error.
+template <class CInput>
+CInput hybrid_c_input(int k) {
+  using S = std::remove_reference_t<decltype(CInput{}.sigma_BN[0])>;
+  const adcs::Vec3 sigma(0.01, -0.02, 0.03 + 1e-4 * k);
+  const adcs::MrpReferenceSample r = adcs::SinusoidalRateReference().sample(1e-3 * k, 0.5 * sigma);
+  CInput ci{};
+  for (int i = 0; i < 3; ++i) {
+    ci.sigma_BN[i] = static_cast<S>(sigma(i));
+    ci.omega_BN_B[i] = static_cast<S>(1e-3 * (i + 1));
+    ci.Omega_rad_s[i] = static_cast<S>(0.0);
+    ci.sigma_d[i] = static_cast<S>(r.sigma(i));
+    ci.sigma_dot_d[i] = static_cast<S>(r.sigma_dot(i));
+    ci.sigma_ddot_d[i] = static_cast<S>(r.sigma_ddot(i));
+  }
+  for (int j = 0; j < 4; ++j) ci.gamma_rad[j] = static_cast<S>(0.1 * j + 1e-3 * k);
+  return ci;
+}
+
+template <class S, class CParams, class CState, class CInput, class COutput, class Init, class Step>
+void expect_hybrid_equals_cpp(Init init, Step step) {
+  const CParams cp = hybrid_c_params<CParams>();
+  CState cs;
+  ASSERT_EQ(init(&cp, &cs), ADCS_STATUS_OK);
+  // The C++ law from the same values: the double parameters and design, rounded once into S.
+  adcs::HybridAdaptiveParams<4, 3> d;
+  d.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  adcs::HybridAdaptiveGains<double> g;
+  ASSERT_EQ(adcs::design_hybrid_adaptive_gains(d.poles, d.Q_L, g), adcs::Status::ok);
+  adcs::HybridAdaptive<4, 3, S> cpp(d.cast<S>(), g.cast<S>());
+  ASSERT_EQ(cpp.status(), adcs::Status::ok);
+  long allocations = 0;
+  for (int k = 0; k < 20; ++k) {
+    const CInput ci = hybrid_c_input<CInput>(k);
+    adcs::HybridAdaptiveInput<4, 3, S> in;
+    for (int i = 0; i < 3; ++i) {
+      in.state.sigma_BN(i) = ci.sigma_BN[i];
+      in.state.omega_BN_B(i) = ci.omega_BN_B[i];
+      in.actuators.Omega_rad_s(i) = ci.Omega_rad_s[i];
+      in.reference.sigma(i) = ci.sigma_d[i];
+      in.reference.sigma_dot(i) = ci.sigma_dot_d[i];
+      in.reference.sigma_ddot(i) = ci.sigma_ddot_d[i];
+    }
+    for (int j = 0; j < 4; ++j) in.actuators.gamma_rad(j) = ci.gamma_rad[j];
+    COutput co{};
+    adcs::VscmgRates<4, 3, S> out;
+    adcs_status s = 0;
+    {
+      adcs::test::NoAllocScope scope;
+      s = step(&cs, &ci, &co);
+      allocations += scope.allocations();
+    }
+    ASSERT_EQ(s, static_cast<adcs_status>(cpp.step(in, out))) << k;
+    for (int j = 0; j < 4; ++j)
+      EXPECT_EQ(std::memcmp(&co.gamma_dot_rad_s[j], &out.gamma_dot_rad_s(j), sizeof(S)), 0) << k;
+    for (int j = 0; j < 3; ++j)
+      EXPECT_EQ(std::memcmp(&co.Omega_dot_rad_s2[j], &out.Omega_dot_rad_s2(j), sizeof(S)), 0) << k;
+  }
+  EXPECT_EQ(allocations, 0);
+}
+
+TEST(CInterface, HybridEqualsTheCppComponentBitForBitWithoutHeap) {
+  expect_hybrid_equals_cpp<double, adcs_hybrid43_params, adcs_hybrid43_state, adcs_hybrid43_input,
+                           adcs_hybrid43_output>(adcs_hybrid43_init, adcs_hybrid43_step);
+  expect_hybrid_equals_cpp<float, adcs_hybrid43f_params, adcs_hybrid43f_state, adcs_hybrid43f_input,
+                           adcs_hybrid43f_output>(adcs_hybrid43f_init, adcs_hybrid43f_step);
+}
+
+TEST(CInterface, HybridDesignRefusesBadPolesAndWritesNothing) {
+  double re[3][2], im[3][2], Q[6][6] = {}, K[3][6], P[6][6];
+  for (int i = 0; i < 6; ++i) Q[i][i] = 1.0;
+  seed001_poles(re, im);
+  K[0][0] = 7.0;
+  P[0][0] = 7.0;
+  EXPECT_EQ(adcs_hybrid_design_gains(nullptr, im, Q, K, P), ADCS_STATUS_INVALID_PARAMETER);
+  re[1][0] = 0.3;  // an unstable pair
+  re[1][1] = 0.3;
+  EXPECT_EQ(adcs_hybrid_design_gains(re, im, Q, K, P), ADCS_STATUS_INVALID_PARAMETER);
+  seed001_poles(re, im);
+  Q[2][2] = -1.0;  // Q_L not SPD
+  EXPECT_EQ(adcs_hybrid_design_gains(re, im, Q, K, P), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(K[0][0], 7.0);
+  EXPECT_EQ(P[0][0], 7.0);
+}
+
+TEST(CInterface, HybridRefusalsAndFailureCommands) {
+  adcs_hybrid43_state s;
+  adcs_hybrid43_output out = {{7.0, 7.0, 7.0, 7.0}, {7.0, 7.0, 7.0}};
+  const adcs_hybrid43_input in = hybrid_c_input<adcs_hybrid43_input>(0);
+  adcs_hybrid43_params p = hybrid_c_params<adcs_hybrid43_params>();
+  EXPECT_EQ(adcs_hybrid43_init(nullptr, &s), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(adcs_hybrid43_init(&p, nullptr), ADCS_STATUS_INVALID_PARAMETER);
+  static adcs_hybrid43_state never;
+  EXPECT_EQ(adcs_hybrid43_step(&never, &in, &out), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(out.gamma_dot_rad_s[0], 7.0);
+  // Refused sets: gains left at zero (no design uploaded), a P that does not solve the Lyapunov
+  // equation for Q_L, a forgotten body inertia, unknown enumerations. Each step then commands zero
+  // gimbal rates and wheel accelerations.
+  for (int which = 0; which < 5; ++which) {
+    p = hybrid_c_params<adcs_hybrid43_params>();
+    if (which == 0) {
+      std::memset(p.K, 0, sizeof p.K);
+      std::memset(p.P, 0, sizeof p.P);
+    }
+    if (which == 1) p.Q_L[0][0] = 2.0;
+    if (which == 2) std::memset(p.J_s, 0, sizeof p.J_s);
+    if (which == 3) p.adaptation_step = 5;
+    if (which == 4) p.on_failure = -1;
+    EXPECT_EQ(adcs_hybrid43_init(&p, &s), ADCS_STATUS_INVALID_PARAMETER) << which;
+    EXPECT_EQ(adcs_hybrid43_step(&s, &in, &out), ADCS_STATUS_INVALID_PARAMETER) << which;
+    for (double u : out.gamma_dot_rad_s) EXPECT_EQ(u, 0.0) << which;
+    for (double u : out.Omega_dot_rad_s2) EXPECT_EQ(u, 0.0) << which;
+  }
+  // Bad input under each policy: zero rates, or the last good command; in float.
+  for (adcs_failure_policy policy : {ADCS_FAILURE_SAFE_COMMAND, ADCS_FAILURE_HOLD_LAST}) {
+    adcs_hybrid43f_params pf = hybrid_c_params<adcs_hybrid43f_params>();
+    pf.on_failure = policy;
+    adcs_hybrid43f_state sf;
+    ASSERT_EQ(adcs_hybrid43f_init(&pf, &sf), ADCS_STATUS_OK);
+    adcs_hybrid43f_input inf = hybrid_c_input<adcs_hybrid43f_input>(0);
+    adcs_hybrid43f_output good{}, bad{};
+    ASSERT_TRUE(adcs_status_usable(adcs_hybrid43f_step(&sf, &inf, &good)));
+    inf.gamma_rad[1] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(adcs_hybrid43f_step(&sf, &inf, &bad), ADCS_STATUS_NON_FINITE_INPUT);
+    for (int j = 0; j < 4; ++j)
+      EXPECT_EQ(bad.gamma_dot_rad_s[j], policy == ADCS_FAILURE_HOLD_LAST ? good.gamma_dot_rad_s[j] : 0.0f);
+    for (int j = 0; j < 3; ++j)
+      EXPECT_EQ(bad.Omega_dot_rad_s2[j], policy == ADCS_FAILURE_HOLD_LAST ? good.Omega_dot_rad_s2[j] : 0.0f);
+  }
+}
+
 TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_mrp_pd4_state), 352u);
   EXPECT_EQ(sizeof(adcs_mrp_pd4f_state), 192u);
@@ -362,6 +561,10 @@ TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_ppcf_state), 1360u);
   EXPECT_EQ(alignof(adcs_ppc_state), 16u);
   EXPECT_EQ(alignof(adcs_ppcf_state), 4u);
+  EXPECT_EQ(sizeof(adcs_hybrid43_state), 2240u);
+  EXPECT_EQ(sizeof(adcs_hybrid43f_state), 1216u);
+  EXPECT_EQ(alignof(adcs_hybrid43_state), 16u);
+  EXPECT_EQ(alignof(adcs_hybrid43f_state), 16u);
 }
 
 }  // namespace ADCS_UNITY_ID

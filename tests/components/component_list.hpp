@@ -324,6 +324,26 @@ struct ComponentFixture<PpcNeuralT<float>> {
 };
 
 template <>
+struct ComponentFixture<HybridAdaptive<4, 3, float>> {
+  static constexpr const char* name = "HybridAdaptive43f";
+  using C = HybridAdaptive<4, 3, float>;
+  using D = ComponentFixture<HybridAdaptive<4, 3>>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.state.omega_BN_B(2) = kNaNf; }
+};
+
+template <>
+struct ComponentFixture<AdaptiveTrackingT<float>> {
+  static constexpr const char* name = "AdaptiveTrackingf";
+  using C = AdaptiveTrackingT<float>;
+  using D = ComponentFixture<AdaptiveTracking>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.reference.angles_ddot(2) = kNaNf; }
+};
+
+template <>
 struct ComponentFixture<Saturation<6>> {
   static constexpr const char* name = "Saturation6";
   static Saturation<6>::Params params() { return Saturation<6>::Params{Vec6(0.5, 0.5, 0.5, 5, 5, 5)}; }
@@ -372,8 +392,8 @@ int put_values(const Eigen::MatrixBase<Derived>& x, double* dst) {
 template <class S>
 int output_values(const BodyTorqueT<S>& o, double* d) { return put_values(o.torque_B_Nm, d); }
 inline int output_values(const Wrench& o, double* d) { return put_values(o.stacked(), d); }
-template <int M, int N>
-int output_values(const VscmgRates<M, N>& o, double* d) { return put_values(o.stacked(), d); }
+template <int M, int N, class S>
+int output_values(const VscmgRates<M, N, S>& o, double* d) { return put_values(o.stacked(), d); }
 template <int N, class S>
 int output_values(const WheelTorques<N, S>& o, double* d) { return put_values(o.u_s_Nm, d); }
 template <int N>
@@ -409,7 +429,8 @@ struct OutputValues {
 using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural, AdaptiveTracking, PrescribedTimeSe3, FtsmcSe3,
                      DragFreeAdrc, Pid<3>, DragFreeEskf, SaturatedEsf, RwTorqueAllocator<4>, Saturation<6>,
                      SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
-                     RwTorqueAllocator<4, float>, PpcNeuralT<float>>;
+                     RwTorqueAllocator<4, float>, PpcNeuralT<float>, HybridAdaptive<4, 3, float>,
+                     AdaptiveTrackingT<float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

@@ -3,12 +3,13 @@
 // input of every step as a C++ header of hex-float literals (exact): replay_inputs_<name>.hpp in
 // the build tree. Usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>
 // Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
-// (ppc_f, attitude and attitude_f too: record_inputs <ppc_f|attitude|attitude_f> <out.hpp> <steps>.)
+// (hybrid_f, ppc_f, attitude and attitude_f too: record_inputs <hybrid_f|ppc_f|attitude|attitude_f> <out.hpp> <steps>.)
 //
 // The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
 // scenarios offer; the plant wrappers are the scenarios' own (src/scenarios/truth_plants.hpp),
 // the drag-free truth is restated (drag_free.cpp keeps it with its noise streams):
-//   hybrid   A-REF: TP-FULL + D1 deviations + σ_d, one RK4 step per 1 ms period (integrator=rk4)
+//   hybrid, hybrid_f  A-REF: TP-FULL + D1 deviations + σ_d, one RK4 step per 1 ms period
+//            (integrator=rk4); each System closes its own loop (hybrid_f: the float law)
 //   ppc, ppc_f  flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s; each
 //            System closes its own loop (ppc_f: the float law)
 //   se3      chaser + target on SE(3), state 1, disturbance, RK4 at h/10 (integrator=rk4)
@@ -80,11 +81,10 @@ void step(const replay::Api& sys, const Row& row) {
 
 // ------------------------------------------------------------------------------ seed 001
 
-Rows record_hybrid(int steps) {
+Rows record_hybrid(const replay::Api& sys, int steps) {
   using FullPlant = HybridSimPlant::FullPlant;
   const FullPlant plant(vscmg_params_A_REF());  // truth = nominal + D1 (spec A.5)
   if (plant.status() != Status::ok) fail("hybrid plant rejected");
-  const replay::Api& sys = replay::kHybrid;
   if (sys.init_status() != Status::ok) fail("hybrid controller rejected");
   const double T = sys.period_s;
   HybridSimPlant sim{&plant, SinusoidalRateReference{}};
@@ -306,7 +306,7 @@ void write_header(const char* path, const char* name, const char* what, const Ro
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) fail("usage: record_inputs <hybrid|ppc|ppc_f|se3|dragfree|attitude|attitude_f> <out.hpp> <steps>");
+  if (argc != 4) fail("usage: record_inputs <hybrid|hybrid_f|ppc|ppc_f|se3|dragfree|attitude|attitude_f> <out.hpp> <steps>");
   const std::string name = argv[1];
   const int steps = std::atoi(argv[3]);
   if (steps < 1) fail("steps must be >= 1");
@@ -314,8 +314,11 @@ int main(int argc, char** argv) {
   const char* what = "";
   try {
     if (name == "hybrid") {
-      rows = record_hybrid(steps);
+      rows = record_hybrid(replay::kHybrid, steps);
       what = "seed 001 A-REF closed loop, T_c = 1 ms";
+    } else if (name == "hybrid_f") {
+      rows = record_hybrid(replay::kHybridF, steps);
+      what = "seed 001 A-REF closed loop (float law), T_c = 1 ms";
     } else if (name == "ppc") {
       rows = record_ppc(replay::kPpc, steps);
       what = "seed 002 flexible-ppc closed loop, T = 1e-4 s";

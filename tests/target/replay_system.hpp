@@ -62,5 +62,6 @@ extern const Api kBaseline;  // empty System (target size baseline)
 extern const Api kAttitude;   // MrpPd<4> + RwTorqueAllocator<4>, double (Cortex-M7)
 extern const Api kAttitudeF;  // the same in float (Cortex-M4F; issue 19)
 extern const Api kPpcF;       // seed 002 in float (Cortex-M4F; issue 19)
+extern const Api kHybridF;    // seed 001 in float (Cortex-M4F; issue 19)
 
 }  // namespace replay

@@ -23,10 +23,11 @@
  *
  * Families: MRP PD with reaction-wheel momentum feedback (4 wheels; the attitude law of the
  * rigid-wheel scenarios, `adcs::MrpPd<4, S>`), the reaction-wheel torque allocation
- * (`adcs::RwTorqueAllocator<4, S>`) and seed 002's prescribed-performance adaptive RBF law
- * (`adcs::PpcNeuralT<S>`), each in double (suffix none) and single precision (suffix f, for FPUs
- * without double: Cortex-M4F). The other families follow as their float instantiations land
- * (docs/TARGET.md).
+ * (`adcs::RwTorqueAllocator<4, S>`), seed 002's prescribed-performance adaptive RBF law
+ * (`adcs::PpcNeuralT<S>`) and seed 001's adaptive law for 4 CMGs + 3 wheels
+ * (`adcs::HybridAdaptive<4, 3, S>`), each in double (suffix none) and single precision (suffix f,
+ * for FPUs without double: Cortex-M4F). The other families follow as their float instantiations
+ * land (docs/TARGET.md).
  */
 #ifndef ADCS_C_ADCS_H
 #define ADCS_C_ADCS_H
@@ -262,6 +263,125 @@ typedef struct adcs_ppcf_output {
 ADCS_C_STATE(adcs_ppcf_state, ADCS_PPCF_STATE_SIZE, ADCS_PPCF_STATE_ALIGN);
 adcs_status adcs_ppcf_init(const adcs_ppcf_params* params, adcs_ppcf_state* state);
 adcs_status adcs_ppcf_step(adcs_ppcf_state* state, const adcs_ppcf_input* in, adcs_ppcf_output* out);
+
+/* ---- Seed 001: adaptive MIMO law for a hybrid CMG + reaction-wheel spacecraft, 4 CMGs + 3 wheels -
+ * (adcs/control/hybrid_adaptive.hpp, seed 001 eqs. (24)-(26)): u = X^+ v with X = G*n + Y_G
+ * Theta_G_hat, v = -K e - F*n - Y_F Theta_F_hat + sigma_ddot_d, e = [sigma - sigma_d; sigma_dot -
+ * sigma_dot_d]; the momentum estimate Theta_F_hat and the installation-deviation estimates
+ * Theta_G_hat (smooth projection) adapt every step. The command is the gimbal rates and the
+ * wheel accelerations. Runs at params.period_s (the paper's 1 ms).
+ * The gains K (closed-loop eigenvalues) and P (A_1^T P + P A_1 = -Q_L) are designed on the
+ * ground, in double, by adcs_hybrid_design_gains below (or adcs::design_hybrid_adaptive_gains in
+ * C++), and uploaded with the parameters: init checks them (P SPD, the Lyapunov equation, A_1
+ * Hurwitz) and runs no pole placement or Lyapunov solve, so the float family computes no double
+ * on board. Geometry: the NOMINAL cluster, all the law knows (columns are the units' axes). */
+typedef int32_t adcs_adaptation_step;
+#define ADCS_ADAPTATION_EXPLICIT_EULER 0 /* theta+ = theta + T theta_dot (seed 001's discretisation) */
+#define ADCS_ADAPTATION_NORMALIZED 1     /* the step scaled by 1 / (1 + lambda / max_step_gain) */
+typedef struct adcs_hybrid43_params {
+  double A_cg[3][4];            /* [-] gimbal axes g_i (column i), B components */
+  double A_cs0[3][4];           /* [-] rotor spin axes at gamma_i = 0 */
+  double A_ct0[3][4];           /* [-] transverse axes at gamma_i = 0 */
+  double A_ws[3][3];            /* [-] wheel spin axes (column j) */
+  double I_cs[4];               /* [kg m^2] CMG inertia about s_i, >= 0 (0: in J_s) */
+  double I_ct[4];               /* [kg m^2] CMG inertia about t_i, >= 0 */
+  double I_cg[4];               /* [kg m^2] CMG inertia about g_i, >= 0 */
+  double h_cw[4];               /* [N m s] CMG rotor momenta, > 0 */
+  double I_wws[3];              /* [kg m^2] wheel spin inertias, > 0 */
+  double J_s[3][3];             /* [kg m^2] body inertia, SPD */
+  double K[3][6];               /* [1/s^2, 1/s] designed gain [K_p K_d] */
+  double P[6][6];               /* [-] designed Lyapunov matrix, SPD */
+  double Q_L[6][6];             /* [-] the Lyapunov weight P was designed for, SPD (seed 001: I_6) */
+  double alpha_F;               /* [-] momentum adaptation gain, >= 0 (seed 001: 1e7) */
+  double alpha_G;               /* [-] deviation adaptation gain, >= 0 (seed 001: 1e3) */
+  double beta_G;                /* [-] projection radius^2, > 0 (seed 001: 0.05) */
+  double delta_G;               /* [-] projection boundary layer, > 0 (seed 001: 0.1) */
+  double H_I_n[3];              /* [N m s] nominal inertial momentum (0 when the wheels start at rest) */
+  double period_s;              /* [s] control period T_c, > 0 (seed 001: 1e-3) */
+  double steering_sigma_threshold; /* [-] sigma_min(X) below which damping starts, >= 0 (1e-3) */
+  double steering_lambda_max;   /* [-] damping at sigma_min = 0, >= 0 (1e-2) */
+  double steering_max_torque_error; /* [-] bound on |Xu - v|/|v| of a usable command, (0, 1] (0.1) */
+  adcs_adaptation_step adaptation_step;
+  double max_step_gain;         /* [-] loop-gain bound of the normalized step, > 0 (0.2) */
+  adcs_failure_policy on_failure;
+} adcs_hybrid43_params;
+typedef struct adcs_hybrid43_input {
+  double sigma_BN[3];           /* [-] measured attitude MRP */
+  double omega_BN_B[3];         /* [rad/s] measured body rate, B components */
+  double gamma_rad[4];          /* [rad] gimbal angles */
+  double Omega_rad_s[3];        /* [rad/s] wheel speeds relative to the body (checked finite) */
+  double sigma_d[3];            /* [-] reference MRP */
+  double sigma_dot_d[3];        /* [1/s] its rate */
+  double sigma_ddot_d[3];       /* [1/s^2] its second derivative */
+} adcs_hybrid43_input;
+typedef struct adcs_hybrid43_output {
+  double gamma_dot_rad_s[4];    /* [rad/s] gimbal rate commands */
+  double Omega_dot_rad_s2[3];   /* [rad/s^2] wheel acceleration commands */
+} adcs_hybrid43_output;
+#define ADCS_HYBRID43_STATE_SIZE 2240
+#define ADCS_HYBRID43_STATE_ALIGN 16
+ADCS_C_STATE(adcs_hybrid43_state, ADCS_HYBRID43_STATE_SIZE, ADCS_HYBRID43_STATE_ALIGN);
+adcs_status adcs_hybrid43_init(const adcs_hybrid43_params* params, adcs_hybrid43_state* state);
+adcs_status adcs_hybrid43_step(adcs_hybrid43_state* state, const adcs_hybrid43_input* in,
+                               adcs_hybrid43_output* out);
+
+/* The same law in single precision (every field float; the law computes in float; K and P are
+ * the double design rounded once). */
+typedef struct adcs_hybrid43f_params {
+  float A_cg[3][4];
+  float A_cs0[3][4];
+  float A_ct0[3][4];
+  float A_ws[3][3];
+  float I_cs[4];
+  float I_ct[4];
+  float I_cg[4];
+  float h_cw[4];
+  float I_wws[3];
+  float J_s[3][3];
+  float K[3][6];
+  float P[6][6];
+  float Q_L[6][6];
+  float alpha_F;
+  float alpha_G;
+  float beta_G;
+  float delta_G;
+  float H_I_n[3];
+  float period_s;
+  float steering_sigma_threshold;
+  float steering_lambda_max;
+  float steering_max_torque_error;
+  adcs_adaptation_step adaptation_step;
+  float max_step_gain;
+  adcs_failure_policy on_failure;
+} adcs_hybrid43f_params;
+typedef struct adcs_hybrid43f_input {
+  float sigma_BN[3];
+  float omega_BN_B[3];
+  float gamma_rad[4];
+  float Omega_rad_s[3];
+  float sigma_d[3];
+  float sigma_dot_d[3];
+  float sigma_ddot_d[3];
+} adcs_hybrid43f_input;
+typedef struct adcs_hybrid43f_output {
+  float gamma_dot_rad_s[4];
+  float Omega_dot_rad_s2[3];
+} adcs_hybrid43f_output;
+#define ADCS_HYBRID43F_STATE_SIZE 1216
+#define ADCS_HYBRID43F_STATE_ALIGN 16
+ADCS_C_STATE(adcs_hybrid43f_state, ADCS_HYBRID43F_STATE_SIZE, ADCS_HYBRID43F_STATE_ALIGN);
+adcs_status adcs_hybrid43f_init(const adcs_hybrid43f_params* params, adcs_hybrid43f_state* state);
+adcs_status adcs_hybrid43f_step(adcs_hybrid43f_state* state, const adcs_hybrid43f_input* in,
+                                adcs_hybrid43f_output* out);
+
+/* Ground design of the gains above, in double (seed 001 section 3): K places one eigenvalue pair
+ * per axis, poles_re[a][k] + i poles_im[a][k] (k = 0, 1: a conjugate pair or two real values, in
+ * the open left half-plane; seed 001: x -0.2 +/- 0.2i, y -0.3 +/- 0.3i, z -0.2 sqrt2 and -0.3 sqrt2),
+ * and P solves A_1^T P + P A_1 = -Q_L. ADCS_STATUS_OK, or ADCS_STATUS_INVALID_PARAMETER (a NULL
+ * pointer, poles not as stated, Q_L not SPD) with K and P untouched. For the ground segment or a
+ * double FPU's start-up: it runs a Schur-based solve, never called by a step. */
+adcs_status adcs_hybrid_design_gains(const double poles_re[3][2], const double poles_im[3][2],
+                                     const double Q_L[6][6], double K[3][6], double P[6][6]);
 
 #ifdef __cplusplus
 }
