@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <cstring>
 #include <limits>
 #include <type_traits>
@@ -443,11 +444,15 @@ void expect_hybrid_equals_cpp(Init init, Step step) {
   const CParams cp = hybrid_c_params<CParams>();
   CState cs;
   ASSERT_EQ(init(&cp, &cs), ADCS_STATUS_OK);
-  // The C++ law from the same values: the double parameters and design, rounded once into S.
+  // The C++ law from the same values: the double parameters and the C call's design (the same
+  // function as adcs::design_hybrid_adaptive_gains; compiled once, in the library), rounded once
+  // into S.
   adcs::HybridAdaptiveParams<4, 3> d;
   d.nominal = adcs::pyramid_4cmg_3rw_nominal();
+  const auto designed = hybrid_c_params<adcs_hybrid43_params>();
   adcs::HybridAdaptiveGains<double> g;
-  ASSERT_EQ(adcs::design_hybrid_adaptive_gains(d.poles, d.Q_L, g), adcs::Status::ok);
+  g.K = Eigen::Map<const Eigen::Matrix<double, 3, 6, Eigen::RowMajor>>(&designed.K[0][0]);
+  g.P = Eigen::Map<const Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(&designed.P[0][0]);
   adcs::HybridAdaptive<4, 3, S> cpp(d.cast<S>(), g.cast<S>());
   ASSERT_EQ(cpp.status(), adcs::Status::ok);
   long allocations = 0;
@@ -485,6 +490,27 @@ TEST(CInterface, HybridEqualsTheCppComponentBitForBitWithoutHeap) {
                            adcs_hybrid43_output>(adcs_hybrid43_init, adcs_hybrid43_step);
   expect_hybrid_equals_cpp<float, adcs_hybrid43f_params, adcs_hybrid43f_state, adcs_hybrid43f_input,
                            adcs_hybrid43f_output>(adcs_hybrid43f_init, adcs_hybrid43f_step);
+}
+
+TEST(CInterface, HybridDesignPlacesThePolesAndSolvesTheLyapunovEquation) {
+  // Per axis a, s² + K(a, 3+a) s + K(a, a) has the requested roots: K_d = −(p1 + p2), K_p = p1 p2;
+  // P solves A_1ᵀP + PA_1 = −Q_L and is SPD (checked without a second Schur-based solve).
+  double re[3][2], im[3][2], Q[6][6] = {}, K[3][6], P[6][6];
+  for (int i = 0; i < 6; ++i) Q[i][i] = 1.0;
+  seed001_poles(re, im);
+  ASSERT_EQ(adcs_hybrid_design_gains(re, im, Q, K, P), ADCS_STATUS_OK);
+  for (int a = 0; a < 3; ++a) {
+    const std::complex<double> p1(re[a][0], im[a][0]), p2(re[a][1], im[a][1]);
+    EXPECT_NEAR(K[a][3 + a], -(p1 + p2).real(), 1e-12) << a;
+    EXPECT_NEAR(K[a][a], (p1 * p2).real(), 1e-12) << a;
+    for (int j = 0; j < 6; ++j)
+      if (j != a && j != 3 + a) EXPECT_EQ(K[a][j], 0.0) << a << "," << j;
+  }
+  const adcs::Mat<3, 6> Km = Eigen::Map<const Eigen::Matrix<double, 3, 6, Eigen::RowMajor>>(&K[0][0]);
+  const adcs::Mat6 Pm = Eigen::Map<const Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(&P[0][0]);
+  const adcs::Mat6 A1 = adcs::double_integrator_closed_loop<3>(Km);
+  EXPECT_LT((A1.transpose() * Pm + Pm * A1 + adcs::Mat6::Identity()).norm(), 1e-10 * Pm.norm());
+  EXPECT_TRUE(adcs::symmetric_positive_definite<6>(Pm));
 }
 
 TEST(CInterface, HybridDesignRefusesBadPolesAndWritesNothing) {

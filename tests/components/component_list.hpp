@@ -344,6 +344,16 @@ struct ComponentFixture<AdaptiveTrackingT<float>> {
 };
 
 template <>
+struct ComponentFixture<EsoAdrcAttitudeT<float>> {
+  static constexpr const char* name = "EsoAdrcAttitudef";
+  using C = EsoAdrcAttitudeT<float>;
+  using D = ComponentFixture<EsoAdrcAttitude>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.state.theta_BN_rad(1) = kNaNf; }  // the law reads only angles
+};
+
+template <>
 struct ComponentFixture<Saturation<6>> {
   static constexpr const char* name = "Saturation6";
   static Saturation<6>::Params params() { return Saturation<6>::Params{Vec6(0.5, 0.5, 0.5, 5, 5, 5)}; }
@@ -430,7 +440,7 @@ using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural
                      DragFreeAdrc, Pid<3>, DragFreeEskf, SaturatedEsf, RwTorqueAllocator<4>, Saturation<6>,
                      SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
                      RwTorqueAllocator<4, float>, PpcNeuralT<float>, HybridAdaptive<4, 3, float>,
-                     AdaptiveTrackingT<float>>;
+                     AdaptiveTrackingT<float>, EsoAdrcAttitudeT<float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

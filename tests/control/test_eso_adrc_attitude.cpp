@@ -1,6 +1,7 @@
 // EsoAdrcAttitude (control/eso_adrc_attitude.hpp): the discrete observer's poles, convergence of
 // f̂ to a constant disturbance on a rigid body, closed-loop settling, parameter refusals, the
-// failure semantics (rejected samples leave the observer untouched) and reset().
+// failure semantics (rejected samples leave the observer untouched) and reset(); the float
+// instance (issue 19) against the double one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -294,6 +295,110 @@ TEST(EsoAdrcAttitude, ResetBringsBackAFreshInstance) {
   h.reset();
   EXPECT_EQ(h.step(at_angles(Vec3(kNaN, 0, 0)), o1), Status::non_finite_input);
   EXPECT_EQ(o1.torque_B_Nm, Vec3::Zero());
+}
+
+// ---- Issue 19: the same law in single precision (EsoAdrcAttitudeT<float>) ----------------------
+using EsoF = adcs::EsoAdrcAttitudeT<float>;
+using Vec3f = adcs::Vec<3, float>;
+
+//! The double law's input rounded once to float, as a single-precision computer receives it.
+EsoF::Input to_float(const EsoAdrcAttitude::Input& in) { return in.cast<float>(); }
+
+TEST(EsoAdrcAttitudeFloat, GainsAreTheDoubleGainsToFloatPrecision) {
+  // l3 = (1 − β)³/h² with β = e^{−ω_o h} = e^{−0.1}: 1 − β loses ~3 bits of float's 24 (header).
+  const EsoAdrcAttitude d(params());
+  const EsoF f(params().cast<float>());
+  ASSERT_EQ(f.status(), Status::ok);
+  const Vec3 gd = d.observer_gains(), gf = f.observer_gains().cast<double>();
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(gf(i), gd(i), 2e-6 * std::abs(gd(i))) << i;
+}
+
+TEST(EsoAdrcAttitudeFloat, ClosedLoopTracksAsTheDoubleLaw) {
+  // The sinusoid of ClosedLoopTracksASinusoidDespiteTheDisturbance, flown by each law on its own
+  // rigid body (double truth): the float law settles as the double one and its steady error stays
+  // at the double law's level, far above float's resolution of the angles (~2e-9 rad at 1°).
+  const Vec3 a = Vec3(0.5, 1.0, -0.5) * (kPi / 180.0);
+  const double w = 0.1, h = params().period_s;
+  RigidBody bd = rigid_body(Vec3(0.009, 0.0045, 0.0045)), bf = bd;
+  bd.theta = bf.theta = Vec3(0.25, 0.15, -0.2) * (kPi / 180.0);
+  EsoAdrcAttitude law_d(params());
+  EsoF law_f(params().cast<float>());
+  BodyTorque ud;
+  adcs::BodyTorqueT<float> uf;
+  double late_d = 0.0, late_f = 0.0, early_f = 0.0, du_max = 0.0, u_max = 0.0;
+  for (int k = 0; k < 2000; ++k) {  // 100 s
+    const double t = k * h;
+    auto input = [&](const Vec3& theta) {
+      EsoAdrcAttitude::Input in = at_angles(theta);
+      in.t_s = t;
+      in.reference.angles = a * std::sin(w * t);
+      in.reference.angles_dot = a * (w * std::cos(w * t));
+      in.reference.angles_ddot = a * (-w * w * std::sin(w * t));
+      return in;
+    };
+    const EsoAdrcAttitude::Input in_d = input(bd.theta), in_f = input(bf.theta);
+    ASSERT_EQ(law_d.step(in_d, ud), Status::ok) << k;
+    ASSERT_EQ(law_f.step(to_float(in_f), uf), Status::ok) << k;
+    const double ed = (bd.theta - in_d.reference.angles).cwiseAbs().maxCoeff();
+    const double ef = (bf.theta - in_f.reference.angles).cwiseAbs().maxCoeff();
+    if (t >= 20.0 && t < 40.0) early_f = std::max(early_f, ef);
+    if (t >= 40.0) {
+      late_d = std::max(late_d, ed);
+      late_f = std::max(late_f, ef);
+    }
+    du_max = std::max(du_max, (uf.torque_B_Nm.cast<double>() - ud.torque_B_Nm).cwiseAbs().maxCoeff());
+    u_max = std::max(u_max, ud.torque_B_Nm.cwiseAbs().maxCoeff());
+    bd.advance(ud.torque_B_Nm, h, 5);
+    bf.advance(uf.torque_B_Nm.cast<double>(), h, 5);
+  }
+  EXPECT_LT(early_f, 1e-4);
+  EXPECT_LT(late_f, 1e-5);
+  EXPECT_LT(late_f, 1.5 * late_d + 1e-7);
+  EXPECT_LT(du_max, 1e-4 * u_max);  // the two commands over the whole run, against its peak
+}
+
+TEST(EsoAdrcAttitudeFloat, FailuresAnswerAStatusAndAFiniteSafeCommand) {
+  constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
+  for (auto policy : {adcs::FailurePolicy::safe_command, adcs::FailurePolicy::hold_last}) {
+    EsoAdrcAttitude::Params p = params();
+    p.on_failure = policy;
+    EsoF a(p.cast<float>()), b(p.cast<float>());
+    adcs::BodyTorqueT<float> oa, ob;
+    for (int k = 0; k < 10; ++k) {
+      const EsoF::Input in = to_float(at_angles(Vec3(0.01 - 1e-4 * k, 0.002 * k, -0.003)));
+      ASSERT_EQ(a.step(in, oa), Status::ok);
+      ASSERT_EQ(b.step(in, ob), Status::ok);
+    }
+    const Vec3f expected = policy == adcs::FailurePolicy::hold_last ? oa.torque_B_Nm : Vec3f::Zero();
+    adcs::BodyTorqueT<float> out;
+    EsoF::Input bad = to_float(at_angles(Vec3::Zero()));
+    bad.state.theta_BN_rad(1) = kNaNf;
+    EXPECT_EQ(a.step(bad, out), Status::non_finite_input);
+    EXPECT_EQ(out.torque_B_Nm, expected);
+    EXPECT_EQ(a.step(to_float(at_angles(Vec3(0.0, kPi / 2.0, 0.0))), out), Status::singular);  // gimbal lock
+    EXPECT_EQ(out.torque_B_Nm, expected);
+    bad = to_float(at_angles(Vec3(1e30, 0.0, 0.0)));  // finite in float, but the step overflows
+    bad.reference.angles_ddot = Vec3f::Constant(3e38f);
+    EXPECT_EQ(a.step(bad, out), Status::out_of_range);
+    EXPECT_EQ(out.torque_B_Nm, expected);
+    EXPECT_TRUE(out.torque_B_Nm.allFinite());
+    for (int k = 10; k < 20; ++k) {  // the observer state is untouched: the twins go on bit for bit
+      const EsoF::Input in = to_float(at_angles(Vec3(0.01 - 1e-4 * k, 0.002 * k, -0.003)));
+      ASSERT_EQ(a.step(in, oa), Status::ok);
+      ASSERT_EQ(b.step(in, ob), Status::ok);
+      EXPECT_EQ(std::memcmp(oa.torque_B_Nm.data(), ob.torque_B_Nm.data(), sizeof(float) * 3), 0) << k;
+    }
+  }
+}
+
+TEST(EsoAdrcAttitudeFloat, ParametersBeyondFloatRangeAreRefused) {
+  EsoAdrcAttitude::Params p = params();
+  p.J_B_kgm2 *= 1e40;  // a valid double inertia that float cannot hold (cast: Inf)
+  EXPECT_EQ(EsoAdrcAttitude(p).status(), Status::ok);
+  EXPECT_EQ(EsoF(p.cast<float>()).status(), Status::invalid_parameter);
+  p = params();
+  p.omega_o_rad_s = 1e-39;  // β rounds to 1 in float: l3 = 0, refused instead of a dead observer
+  EXPECT_EQ(EsoF(p.cast<float>()).status(), Status::invalid_parameter);
 }
 
 }  // namespace

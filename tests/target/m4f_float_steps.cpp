@@ -1,12 +1,16 @@
-// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-002 compiled for a
+// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-002 (and the
+// ESO-based ADRC flown on seed 002's vehicle) compiled for a
 // single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard) with
 // -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py then walks the call
 // graph of this object from the adcs_m4f_* entry points and fails if any software-double helper
 // (__aeabi_d*, __aeabi_*2d) or double libm function (sin, cos, sqrt, atan, ...) is reachable: on
 // this FPU a single double operation is a ~60-cycle library call.
+#include <new>
+
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/adaptive_tracking.hpp"
+#include "adcs/control/eso_adrc_attitude.hpp"
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/ppc_neural.hpp"
 
@@ -16,6 +20,9 @@ template class RwTorqueAllocator<4, float>;
 // Seed 002: both Euler-angle tracking laws (their constructors are float too: an LLT of J).
 template class PpcNeuralT<float>;
 template class AdaptiveTrackingT<float>;
+// Seed 002's vehicle with the ESO-based ADRC (the cross pairing): its constructor forms the
+// observer gains in float (expf), so it is checked too.
+template class EsoAdrcAttitudeT<float>;
 // Seed 001: the run-time members only. Its constructor runs the design in double on purpose
 // (pole placement, Lyapunov solve: software double once at start-up); compiled to code here it
 // cost ~70 arm-none-eabi-g++ CPU-s. The whole class, constructor included, is compiled with
@@ -37,6 +44,7 @@ using AllocF = adcs::RwTorqueAllocator<4, float>;
 using HybridF = adcs::HybridAdaptive<4, 3, float>;
 using PpcF = adcs::PpcNeuralT<float>;
 using AtcF = adcs::AdaptiveTrackingT<float>;
+using EsoF = adcs::EsoAdrcAttitudeT<float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
 extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
@@ -54,3 +62,7 @@ extern "C" int adcs_m4f_ppc_neural_step(PpcF* c, const PpcF::Input* in, PpcF::Ou
 extern "C" int adcs_m4f_adaptive_tracking_step(AtcF* c, const AtcF::Input* in, AtcF::Output* out) {
   return static_cast<int>(c->step(*in, *out));
 }
+extern "C" int adcs_m4f_eso_adrc_attitude_step(EsoF* c, const EsoF::Input* in, EsoF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
+extern "C" void adcs_m4f_eso_adrc_attitude_init(EsoF* c, const EsoF::Params* p) { ::new (static_cast<void*>(c)) EsoF(*p); }

@@ -8,7 +8,7 @@
  *   - an opaque state the CALLER allocates (static storage, a task's stack, a cFS app's global),
  *     of the size and alignment given by ADCS_<FAMILY>_STATE_SIZE / _ALIGN: the C++ component
  *     plus a 4-byte init tag, rounded up to the alignment. The library checks these constants
- *     against the C++ types at compile time (src/c/adcs_c.cpp, static_assert: equality), on every
+ *     against the C++ types at compile time (src/c/adcs_c*.cpp, static_assert: equality), on every
  *     platform it is built for (x86-64, Cortex-M7 double, Cortex-M4F single precision; the same
  *     numbers on all three);
  *   - adcs_<family>_init(params, state): validates the parameters and constructs the controller in

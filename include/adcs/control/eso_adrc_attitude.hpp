@@ -47,6 +47,12 @@
 //
 // Angle wrap: the innovation y − ϑ̄ and the error e are wrapped to (−π, π], so ϑ_1, ϑ_3 crossing
 // ±π does not kick the observer.
+//
+// Scalar (issue 19): EsoAdrcAttitudeT<S>; `EsoAdrcAttitude` is the double instance. Everything,
+// the gains at construction included, is computed in S. In float the observer's third gain
+// l3 = (1 − β)³/h² is formed from 1 − β with β = e^{−ω_o h} close to 1 at small ω_o h: 1 − β
+// loses ~log2(1/(ω_o h)) bits (ω_o h = 0.1, the flexible-eso-adrc default: ~3 of float's 24), so
+// the float observer's poles sit at e^{−ω_o h} to ~1e-6, not to the last bit.
 #include <cmath>
 
 #include "adcs/control/euler_tracking_common.hpp"
@@ -63,46 +69,60 @@ namespace adcs {
 //! J and the sample period have no default (NaN: refused): they are the vehicle's and the
 //! computer's. The bandwidths have none either: they depend on the vehicle (structural modes,
 //! sensor noise, actuator authority), so a forgotten one is refused, never guessed.
-struct EsoAdrcAttitudeParams {
-  Mat3 J_B_kgm2 = Mat3::Constant(kUnset);  //!< [kg m²] nominal inertia in B̂⁻¹ = J G, B components, SPD
-  double omega_o_rad_s = kUnset;           //!< [rad/s] observer bandwidth ω_o (poles at −ω_o), > 0
-  double omega_c_rad_s = kUnset;           //!< [rad/s] controller bandwidth ω_c (k_p = ω_c², k_d = 2ω_c), > 0
-  double period_s = kUnset;                //!< [s] sample period h, > 0, with ω_c h < 1
+template <class S = double>
+struct EsoAdrcAttitudeParamsT {
+  Mat<3, 3, S> J_B_kgm2 = Mat<3, 3, S>::Constant(unset_v<S>);  //!< [kg m²] nominal inertia in B̂⁻¹ = J G, B components, SPD
+  S omega_o_rad_s = unset_v<S>;            //!< [rad/s] observer bandwidth ω_o (poles at −ω_o), > 0
+  S omega_c_rad_s = unset_v<S>;            //!< [rad/s] controller bandwidth ω_c (k_p = ω_c², k_d = 2ω_c), > 0
+  S period_s = unset_v<S>;                 //!< [s] sample period h, > 0, with ω_c h < 1
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed step: zero torque, or hold
+  //! The same parameters in another scalar (each value rounded once; validated by the law).
+  template <class T>
+  EsoAdrcAttitudeParamsT<T> cast() const noexcept {
+    return {scalar_cast<T>(J_B_kgm2), narrow_scalar<T>(omega_o_rad_s), narrow_scalar<T>(omega_c_rad_s),
+            narrow_scalar<T>(period_s), on_failure};
+  }
 };
+using EsoAdrcAttitudeParams = EsoAdrcAttitudeParamsT<double>;
 
 //! What one step computed (filled only when a pointer is passed).
-struct EsoAdrcAttitudeDiagnostics {
-  Vec3 angles_hat_rad = Vec3::Zero();      //!< [rad] ϑ̂, observer state z1 after the correction
-  Vec3 angles_dot_hat_rad_s = Vec3::Zero();  //!< [rad/s] ϑ̂̇, z2
-  Vec3 f_hat_rad_s2 = Vec3::Zero();        //!< [rad/s²] f̂, z3: the estimated total disturbance
-  Vec3 innovation_rad = Vec3::Zero();      //!< [rad] y − ϑ̄ (predicted), wrapped
-  Vec3 e_rad = Vec3::Zero();               //!< [rad] ϑ̂ − ϑ_d, wrapped
-  Vec3 e_dot_rad_s = Vec3::Zero();         //!< [rad/s] ϑ̂̇ − ϑ̇_d
-  Vec3 v_rad_s2 = Vec3::Zero();            //!< [rad/s²] virtual control v = B̂ u
+template <class S = double>
+struct EsoAdrcAttitudeDiagnosticsT {
+  Vec<3, S> angles_hat_rad = Vec<3, S>::Zero();        //!< [rad] ϑ̂, observer state z1 after the correction
+  Vec<3, S> angles_dot_hat_rad_s = Vec<3, S>::Zero();  //!< [rad/s] ϑ̂̇, z2
+  Vec<3, S> f_hat_rad_s2 = Vec<3, S>::Zero();          //!< [rad/s²] f̂, z3: the estimated total disturbance
+  Vec<3, S> innovation_rad = Vec<3, S>::Zero();        //!< [rad] y − ϑ̄ (predicted), wrapped
+  Vec<3, S> e_rad = Vec<3, S>::Zero();                 //!< [rad] ϑ̂ − ϑ_d, wrapped
+  Vec<3, S> e_dot_rad_s = Vec<3, S>::Zero();           //!< [rad/s] ϑ̂̇ − ϑ̇_d
+  Vec<3, S> v_rad_s2 = Vec<3, S>::Zero();              //!< [rad/s²] virtual control v = B̂ u
 };
+using EsoAdrcAttitudeDiagnostics = EsoAdrcAttitudeDiagnosticsT<double>;
 
-class EsoAdrcAttitude {
+//! S: the scalar the law computes in (issue 19); `EsoAdrcAttitude` is the double instance.
+template <class S = double>
+class EsoAdrcAttitudeT {
  public:
-  using Params = EsoAdrcAttitudeParams;
-  using Input = EulerTrackingInput;
-  using Output = BodyTorque;
-  using Diagnostics = EsoAdrcAttitudeDiagnostics;
+  using Params = EsoAdrcAttitudeParamsT<S>;
+  using Input = EulerTrackingInputT<S>;
+  using Output = BodyTorqueT<S>;
+  using Diagnostics = EsoAdrcAttitudeDiagnosticsT<S>;
+  using Vec3S = Vec<3, S>;
+  using Mat3S = Mat<3, 3, S>;
 
-  explicit EsoAdrcAttitude(const Params& p) noexcept : p_(p) {
-    const double h = p_.period_s;
-    const bool ok_basic = symmetric_positive_definite<3>(p_.J_B_kgm2) && finite_positive(h) &&
+  explicit EsoAdrcAttitudeT(const Params& p) noexcept : p_(p) {
+    const S h = p_.period_s;
+    const bool ok_basic = symmetric_positive_definite<3, S>(p_.J_B_kgm2) && finite_positive(h) &&
                           finite_positive(p_.omega_o_rad_s) && finite_positive(p_.omega_c_rad_s) &&
-                          p_.omega_c_rad_s * h < 1.0;
+                          p_.omega_c_rad_s * h < S(1);
     if (ok_basic) {
-      const double beta = std::exp(-p_.omega_o_rad_s * h), m = 1.0 - beta;
-      l1_ = 1.0 - beta * beta * beta;
-      l2_ = 1.5 * m * m * (1.0 + beta) / h;
+      const S beta = std::exp(-p_.omega_o_rad_s * h), m = S(1) - beta;
+      l1_ = S(1) - beta * beta * beta;
+      l2_ = S(1.5) * m * m * (S(1) + beta) / h;
       l3_ = m * m * m / (h * h);
       kp_ = p_.omega_c_rad_s * p_.omega_c_rad_s;
-      kd_ = 2.0 * p_.omega_c_rad_s;
+      kd_ = S(2) * p_.omega_c_rad_s;
     }
-    const bool ok = ok_basic && std::isfinite(l1_) && std::isfinite(l2_) && std::isfinite(l3_) && l3_ > 0.0;
+    const bool ok = ok_basic && std::isfinite(l1_) && std::isfinite(l2_) && std::isfinite(l3_) && l3_ > S(0);
     status_ = ok ? Status::ok : Status::invalid_parameter;
     reset();
   }
@@ -113,7 +133,7 @@ class EsoAdrcAttitude {
   //! that (1 − β)³/h² underflows). ω_o h has no upper limit (current-form exact ESO). A refused
   //! law answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return p_.period_s; }
+  S period_s() const noexcept { return p_.period_s; }
   const Params& params() const noexcept { return p_; }
 
   //! The observer forgets its state (the next step starts it again from that step's angles, with
@@ -128,11 +148,11 @@ class EsoAdrcAttitude {
   }
 
   //! Observer gains L = [l1, l2 [1/s], l3 [1/s²]] (the same on every axis).
-  Vec3 observer_gains() const noexcept { return Vec3(l1_, l2_, l3_); }
+  Vec3S observer_gains() const noexcept { return Vec3S(l1_, l2_, l3_); }
   bool started() const noexcept { return started_; }
-  const Vec3& angles_hat_rad() const noexcept { return z1_; }
-  const Vec3& angles_dot_hat_rad_s() const noexcept { return z2_; }
-  const Vec3& f_hat_rad_s2() const noexcept { return z3_; }
+  const Vec3S& angles_hat_rad() const noexcept { return z1_; }
+  const Vec3S& angles_dot_hat_rad_s() const noexcept { return z2_; }
+  const Vec3S& f_hat_rad_s2() const noexcept { return z3_; }
 
   //! One sample: observer predict + correct with the measured angles, then u = J G(y) v.
   //! ok; non_finite_input (an angle or a reference sample NaN/Inf; the rate is not read);
@@ -144,20 +164,20 @@ class EsoAdrcAttitude {
   [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
     out = failure_command(p_.on_failure, last_, Output{});
     if (status_ != Status::ok) return status_;
-    const Vec3& y = in.state.theta_BN_rad;
-    const EulerReferenceSample& r = in.reference;
+    const Vec3S& y = in.state.theta_BN_rad;
+    const EulerReferenceSampleT<S>& r = in.reference;
     if (!all_finite(y) || !all_finite(r.angles) || !all_finite(r.angles_dot) || !all_finite(r.angles_ddot))
       return Status::non_finite_input;
-    Mat3 F;  // only to detect gimbal lock: B̂ = F J⁻¹ does not exist there
-    const Status ks = euler123_F(y, F);
+    Mat3S F;  // only to detect gimbal lock: B̂ = F J⁻¹ does not exist there
+    const Status ks = euler123_F<S>(y, F);
     if (ks != Status::ok) return ks;
-    const double h = p_.period_s;
-    Vec3 z1, z2, z3, innov;
+    const S h = p_.period_s;
+    Vec3S z1, z2, z3, innov;
     if (started_) {
       // predict with the exact ZOH model of ϑ̈ = v + f, ḟ = 0               seed 004 eq. (7)
-      const Vec3 a = z3_ + v_prev_;
-      const Vec3 z1p = z1_ + h * z2_ + (0.5 * h * h) * a;
-      const Vec3 z2p = z2_ + h * a;
+      const Vec3S a = z3_ + v_prev_;
+      const Vec3S z1p = z1_ + h * z2_ + (S(0.5) * h * h) * a;
+      const Vec3S z2p = z2_ + h * a;
       innov = wrap(y - z1p);
       // correct with the current measurement (current-form ESO, poles at e^{−ω_o h})
       z1 = z1p + l1_ * innov;
@@ -169,9 +189,9 @@ class EsoAdrcAttitude {
       z2.setZero();
       z3.setZero();
     }
-    const Vec3 e = wrap(z1 - r.angles);
-    const Vec3 e_dot = z2 - r.angles_dot;
-    const Vec3 v = r.angles_ddot - kp_ * e - kd_ * e_dot - z3;  // ϑ̈ = v + f, f̂ cancelled
+    const Vec3S e = wrap(z1 - r.angles);
+    const Vec3S e_dot = z2 - r.angles_dot;
+    const Vec3S v = r.angles_ddot - kp_ * e - kd_ * e_dot - z3;  // ϑ̈ = v + f, f̂ cancelled
     Output c;
     c.torque_B_Nm.noalias() = p_.J_B_kgm2 * (euler123_G(y) * v);  // u = B̂⁻¹ v = J G(y) v
     if (diag) {
@@ -196,24 +216,26 @@ class EsoAdrcAttitude {
   }
 
  private:
-  static constexpr double kPi = 3.14159265358979323846;
+  static constexpr S kTwoPi = S(6.28318530717958647692);
   //! Each component to (−π, π] (identity for the small errors of tracking).
-  static Vec3 wrap(const Vec3& x) noexcept {
-    Vec3 w;
-    for (int i = 0; i < 3; ++i) w(i) = std::remainder(x(i), 2.0 * kPi);
+  static Vec3S wrap(const Vec3S& x) noexcept {
+    Vec3S w;
+    for (int i = 0; i < 3; ++i) w(i) = std::remainder(x(i), kTwoPi);
     return w;
   }
 
   Params p_;
   Status status_ = Status::ok;
-  double l1_ = 0.0, l2_ = 0.0, l3_ = 0.0;  // observer gains [-, 1/s, 1/s²]
-  double kp_ = 0.0, kd_ = 0.0;             // [1/s², 1/s]
-  Vec3 z1_ = Vec3::Zero(), z2_ = Vec3::Zero(), z3_ = Vec3::Zero();  // ϑ̂, ϑ̂̇, f̂
-  Vec3 v_prev_ = Vec3::Zero();             // v of the last committed step (held over the period)
+  S l1_ = S(0), l2_ = S(0), l3_ = S(0);  // observer gains [-, 1/s, 1/s²]
+  S kp_ = S(0), kd_ = S(0);              // [1/s², 1/s]
+  Vec3S z1_ = Vec3S::Zero(), z2_ = Vec3S::Zero(), z3_ = Vec3S::Zero();  // ϑ̂, ϑ̂̇, f̂
+  Vec3S v_prev_ = Vec3S::Zero();         // v of the last committed step (held over the period)
   bool started_ = false;
   Output last_{};
 };
 
+using EsoAdrcAttitude = EsoAdrcAttitudeT<double>;
 ADCS_ASSERT_COMPONENT(EsoAdrcAttitude);
+ADCS_ASSERT_COMPONENT(EsoAdrcAttitudeT<float>);
 
 }  // namespace adcs
