@@ -29,7 +29,7 @@ adcs_status mrp_pd_init(const CParams* cp, CState* state) noexcept {
   p.J_s = from_array(cp->J_s);
   p.period_s = cp->period_s;
   if (!policy(cp->on_failure, p.on_failure)) p.K = unset_v<S>;  // refused by validate()
-  return init<MrpPd<4, S>>(p, state);
+  return init<MrpPd<4, S>>(state, p);
 }
 
 template <class S, class CState, class CInput, class COutput>
@@ -55,7 +55,7 @@ adcs_status rw_alloc_init(const CParams* cp, CState* state) noexcept {
   RwAllocationParams<4, S> p;
   p.G_s_B = from_rows(cp->G_s_B);
   p.torque_limit = cp->torque_limit;
-  return init<RwTorqueAllocator<4, S>>(p, state);
+  return init<RwTorqueAllocator<4, S>>(state, p);
 }
 
 template <class S, class CState, class CInput, class COutput>

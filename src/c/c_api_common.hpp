@@ -57,9 +57,11 @@ bool initialised(const CState& s) noexcept {
   return tag == kInitialised;
 }
 
-template <class C, class CState>
-adcs_status init(const typename C::Params& p, CState* state) noexcept {
-  C* c = ::new (static_cast<void*>(state->opaque)) C(p);
+//! Constructs C from `args` (its parameters, and for seed 001 its uploaded gains) in the caller's
+//! state and tags it initialised; returns the construction status.
+template <class C, class CState, class... Args>
+adcs_status init(CState* state, const Args&... args) noexcept {
+  C* c = ::new (static_cast<void*>(state->opaque)) C(args...);
   write_tag(*state, kInitialised);
   return static_cast<adcs_status>(c->status());
 }

@@ -49,9 +49,7 @@ adcs_status hybrid_init(const CParams* cp, CState* state) noexcept {
   HybridAdaptiveGains<S> gains;
   gains.K = from_rows(cp->K);
   gains.P = from_rows(cp->P);
-  HybridAdaptive<4, 3, S>* c = ::new (static_cast<void*>(state->opaque)) HybridAdaptive<4, 3, S>(p, gains);
-  write_tag(*state, kInitialised);
-  return static_cast<adcs_status>(c->status());
+  return init<HybridAdaptive<4, 3, S>>(state, p, gains);
 }
 
 template <class S, class CState, class CInput, class COutput>

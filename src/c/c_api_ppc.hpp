@@ -44,7 +44,7 @@ adcs_status ppc_init(const CParams* cp, CState* state) noexcept {
   else
     g.period_s = unset_v<S>;
   if (!policy(cp->on_failure, g.on_failure)) g.period_s = unset_v<S>;
-  return init<PpcNeuralT<S>>(p, state);
+  return init<PpcNeuralT<S>>(state, p);
 }
 
 template <class S, class CState, class CInput, class COutput>
