@@ -51,13 +51,16 @@ SYSTEMS_M4F = {
              "(double rows to float: library calls), one step() (control/ppc_neural.hpp)",
     "hybrid_f": "seed 001 hybrid adaptive HybridAdaptive<4, 3, float> on the A-REF configuration, Cortex-M4F: "
                 "row conversion (double rows to float: library calls), one step() (control/hybrid_adaptive.hpp)",
+    "se3_f": "seed 003 BsPdTC PrescribedTimeSe3T<float>, Cortex-M4F: row conversion (double rows to float: "
+             "library calls), one step() (control/prescribed_time_se3.hpp); the desired state and sat -> Q "
+             "stay with the double ground code, as in se3-ptc --set scalar=float",
 }
 GOAL = 10000  # instructions per step (issue 7)
 # The stage that is the controller's own step() in Systems whose step() has more (the rest are
 # the desired state, quantisation, or estimators).
 CONTROLLER_STAGE = {"se3": "controller_step", "dragfree": "adrc_step", "attitude": "mrp_pd_step",
                     "attitude_f": "mrp_pd_step", "ppc": "ppc_step", "ppc_f": "ppc_step",
-                    "hybrid_f": "hybrid_step"}
+                    "hybrid_f": "hybrid_step", "se3_f": "controller_step"}
 QEMU_ARGS = ["-nographic", "-monitor", "none", "-serial", "none",
              "-semihosting-config", "enable=on,target=native", "-icount", "shift=0"]
 

@@ -156,8 +156,6 @@ void declare_scalar(ParamSet& p);
 //! The same name for a scenario whose flight components exist in double only: `--set
 //! scalar=float` is refused with the allowed values and `why` in the parameter's help.
 void declare_scalar_double_only(ParamSet& p, const std::string& why);
-inline constexpr const char* kSe3DoubleOnly =
-    "seed 003's laws (PrescribedTimeSe3, FtsmcSe3) and their SE(3) math are not scalar-generic yet (issue 19)";
 inline constexpr const char* kDragFreeDoubleOnly =
     "seed 004's filters, fusion and ADRC are not scalar-generic yet (issue 19)";
 inline constexpr const char* kScalarHelp =

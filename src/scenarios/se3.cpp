@@ -153,7 +153,7 @@ class Se3Scenario final : public Scenario {
   }
   void declare(ParamSet& p) const override {
     declare_environment(p);
-    declare_scalar_double_only(p, kSe3DoubleOnly);
+    declare_scalar(p);
     p.number("initial_state", 1, "-", "seed 003 §4 initial-state table, rows 1-4 (spec A.8)");
     if (law_ == Law::ptc) {
       declare_ptc_gains(p);

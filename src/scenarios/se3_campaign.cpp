@@ -67,7 +67,7 @@ class Se3Campaign final : public Scenario {
   }
   void declare(ParamSet& p) const override {
     declare_environment(p);
-    declare_scalar_double_only(p, kSe3DoubleOnly);
+    declare_scalar(p);
     declare_ptc_gains(p);
     declare_ftsmc_gains(p);
     p.vector_any("T_sweep_s", {80.0, 100.0, 120.0, 140.0}, "s",

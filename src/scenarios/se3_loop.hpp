@@ -36,6 +36,7 @@ struct Se3Config {
   bool rk4 = false;
   double rtol = 1e-13, atol = 1e-14, rk4_step = 0.0125;
   int record_every = 1;
+  bool single = false;  //!< `--set scalar=float`: the law runs in float (issue 19), the plant in double
 };
 
 struct Outcome {

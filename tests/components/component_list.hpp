@@ -354,6 +354,26 @@ struct ComponentFixture<EsoAdrcAttitudeT<float>> {
 };
 
 template <>
+struct ComponentFixture<PrescribedTimeSe3T<float>> {
+  static constexpr const char* name = "PrescribedTimeSe3f";
+  using C = PrescribedTimeSe3T<float>;
+  using D = ComponentFixture<PrescribedTimeSe3>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.state.v_B(0) = kNaNf; }
+};
+
+template <>
+struct ComponentFixture<FtsmcSe3T<float>> {
+  static constexpr const char* name = "FtsmcSe3f";
+  using C = FtsmcSe3T<float>;
+  using D = ComponentFixture<FtsmcSe3>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in.desired.omega_dot_D(1) = kNaNf; }
+};
+
+template <>
 struct ComponentFixture<Saturation<6>> {
   static constexpr const char* name = "Saturation6";
   static Saturation<6>::Params params() { return Saturation<6>::Params{Vec6(0.5, 0.5, 0.5, 5, 5, 5)}; }
@@ -401,7 +421,8 @@ int put_values(const Eigen::MatrixBase<Derived>& x, double* dst) {
 }
 template <class S>
 int output_values(const BodyTorqueT<S>& o, double* d) { return put_values(o.torque_B_Nm, d); }
-inline int output_values(const Wrench& o, double* d) { return put_values(o.stacked(), d); }
+template <class S>
+int output_values(const WrenchT<S>& o, double* d) { return put_values(o.stacked(), d); }
 template <int M, int N, class S>
 int output_values(const VscmgRates<M, N, S>& o, double* d) { return put_values(o.stacked(), d); }
 template <int N, class S>
@@ -440,7 +461,8 @@ using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural
                      DragFreeAdrc, Pid<3>, DragFreeEskf, SaturatedEsf, RwTorqueAllocator<4>, Saturation<6>,
                      SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
                      RwTorqueAllocator<4, float>, PpcNeuralT<float>, HybridAdaptive<4, 3, float>,
-                     AdaptiveTrackingT<float>, EsoAdrcAttitudeT<float>>;
+                     AdaptiveTrackingT<float>, EsoAdrcAttitudeT<float>, PrescribedTimeSe3T<float>,
+                     FtsmcSe3T<float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

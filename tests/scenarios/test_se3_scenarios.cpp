@@ -311,6 +311,49 @@ TEST(Se3Scenarios, BadOptionsAreParamErrors) {
   EXPECT_THROW(run("se3-ptc", {{"quantize", "2"}}), adcs::sim::ParamError);
   EXPECT_THROW(run("se3-ftsmc", {{"uncertainty_sign", "0"}}), adcs::sim::ParamError);
 }
+const adcs::sim::Claim* claim_of(const RunResult& r, const char* prefix) {
+  const adcs::sim::Claim* c = adcs::sim::test::find_claim(r, prefix);
+  EXPECT_NE(c, nullptr) << prefix;
+  return c;
+}
+
+// Issue 19: both laws in float (plant in double, `--set scalar=float`). What holds and what does
+// not, and why (tools/float-vs-double.py gives the whole table, docs/TARGET.md):
+// - attitude: settling, steady attitude and rate errors as in double (to ~5 %), every attitude
+//   criterion holds; the laws never fail a tick and stay within the actuator limits;
+// - position: the law reads R − R_d from two ECI positions of ~6.8e6 m rounded to float (0.5 m
+//   ulp) and v_e from inertial velocities of ~7.7 km/s (4.9e-4 m/s ulp). The orbital motion
+//   dithers that rounding from tick to tick and the loop averages it, so the steady position error
+//   is mm-level (2-6 mm), not 0.5 m, but 20-60x the 1e-4 m band of spec A.9: the position
+//   criteria fail in float, and the test says so, so a change that fixes or worsens it is seen.
+TEST(Se3Scenarios, FloatLawsKeepTheAttitudeClaimsAndLoseThePositionBandToFloatEci) {
+  const RunResult ptc_f = run("se3-ptc", {{"scalar", "float"}});
+  for (const char* name : {"se3-ptc", "se3-ftsmc"}) {
+    SCOPED_TRACE(name);
+    const bool ptc = std::string(name) == "se3-ptc";
+    const RunResult d = ptc ? ptc_state1() : run(name);
+    const RunResult f = ptc ? ptc_f : run(name, {{"scalar", "float"}});
+    EXPECT_EQ(metric(f, "nonok_steps"), 0.0);
+    EXPECT_LE(metric(f, "torque_max_Nm"), 0.5);
+    EXPECT_LE(metric(f, "force_max_N"), 5.0);
+    EXPECT_NEAR(metric(f, "settle_att_s"), metric(d, "settle_att_s"), 1.0);
+    EXPECT_NEAR(metric(f, "att_err_ss_deg"), metric(d, "att_err_ss_deg"), 0.1 * metric(d, "att_err_ss_deg"));
+    EXPECT_NEAR(metric(f, "rate_err_ss_deg_s"), metric(d, "rate_err_ss_deg_s"), 0.1 * metric(d, "rate_err_ss_deg_s"));
+    // Position: mm-level in float (measured 2.0 mm BsPdTC, 6.0 mm FTSMC), µm-level in double.
+    EXPECT_GT(metric(f, "pos_err_ss_m"), 1e-4);
+    EXPECT_LT(metric(f, "pos_err_ss_m"), 2e-2);
+    EXPECT_LT(metric(d, "pos_err_ss_m"), 1e-4);
+    EXPECT_LT(metric(f, "vel_err_ss_m_s"), 2e-2);
+    const adcs::sim::Claim* limits = claim_of(f, "commands within the actuator limits");
+    if (limits && limits->holds) EXPECT_TRUE(*limits->holds);
+  }
+  const adcs::sim::Claim* att = claim_of(ptc_f, "A.9-3 steady attitude error");
+  const adcs::sim::Claim* pos = claim_of(ptc_f, "A.9-4 steady position error");
+  ASSERT_TRUE(att && pos && att->holds && pos->holds);
+  EXPECT_TRUE(*att->holds);
+  EXPECT_FALSE(*pos->holds);
+}
+
 }  // namespace
 
 using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)

@@ -1,4 +1,4 @@
-// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-002 (and the
+// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-003 (and the
 // ESO-based ADRC flown on seed 002's vehicle) compiled for a
 // single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard) with
 // -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py then walks the call
@@ -11,8 +11,10 @@
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/adaptive_tracking.hpp"
 #include "adcs/control/eso_adrc_attitude.hpp"
+#include "adcs/control/ftsmc_se3.hpp"
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/ppc_neural.hpp"
+#include "adcs/control/prescribed_time_se3.hpp"
 
 namespace adcs {
 template class MrpPd<4, float>;
@@ -23,6 +25,9 @@ template class AdaptiveTrackingT<float>;
 // Seed 002's vehicle with the ESO-based ADRC (the cross pairing): its constructor forms the
 // observer gains in float (expf), so it is checked too.
 template class EsoAdrcAttitudeT<float>;
+// Seed 003: both SE(3) laws, constructors included (an LDLT of J0 and two powf for S's l1, l2).
+template class PrescribedTimeSe3T<float>;
+template class FtsmcSe3T<float>;
 // Seed 001: the run-time members only. Its constructor runs the design in double on purpose
 // (pole placement, Lyapunov solve: software double once at start-up); compiled to code here it
 // cost ~70 arm-none-eabi-g++ CPU-s. The whole class, constructor included, is compiled with
@@ -45,6 +50,8 @@ using HybridF = adcs::HybridAdaptive<4, 3, float>;
 using PpcF = adcs::PpcNeuralT<float>;
 using AtcF = adcs::AdaptiveTrackingT<float>;
 using EsoF = adcs::EsoAdrcAttitudeT<float>;
+using PtcF = adcs::PrescribedTimeSe3T<float>;
+using FtsF = adcs::FtsmcSe3T<float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
 extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
@@ -66,3 +73,11 @@ extern "C" int adcs_m4f_eso_adrc_attitude_step(EsoF* c, const EsoF::Input* in, E
   return static_cast<int>(c->step(*in, *out));
 }
 extern "C" void adcs_m4f_eso_adrc_attitude_init(EsoF* c, const EsoF::Params* p) { ::new (static_cast<void*>(c)) EsoF(*p); }
+extern "C" int adcs_m4f_prescribed_time_se3_step(PtcF* c, const PtcF::Input* in, PtcF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
+extern "C" void adcs_m4f_prescribed_time_se3_init(PtcF* c, const PtcF::Params* p) { ::new (static_cast<void*>(c)) PtcF(*p); }
+extern "C" int adcs_m4f_ftsmc_se3_step(FtsF* c, const FtsF::Input* in, FtsF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
+extern "C" void adcs_m4f_ftsmc_se3_init(FtsF* c, const FtsF::Params* p) { ::new (static_cast<void*>(c)) FtsF(*p); }

@@ -3,7 +3,7 @@
 // input of every step as a C++ header of hex-float literals (exact): replay_inputs_<name>.hpp in
 // the build tree. Usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>
 // Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
-// (hybrid_f, ppc_f, attitude and attitude_f too: record_inputs <hybrid_f|ppc_f|attitude|attitude_f> <out.hpp> <steps>.)
+// (hybrid_f, ppc_f, se3_f, attitude and attitude_f too: record_inputs <hybrid_f|ppc_f|se3_f|attitude|attitude_f> <out.hpp> <steps>.)
 //
 // The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
 // scenarios offer; the plant wrappers are the scenarios' own (src/scenarios/truth_plants.hpp),
@@ -149,21 +149,47 @@ Rows record_ppc(const replay::Api& sys, int steps) {
 
 // ------------------------------------------------------------------------------ seed 003
 
+//! The se3-ptc loop's plant at state 1 with the spec A.8 defaults (the Systems' own), for a System
+//! of period `period_s`.
+struct Se3Loop {
+  Se3ScenarioParams sp;
+  Se3Spacecraft chaser, target;
+  Se3PairPlant plant;
+  Se3PairPlant::State x;
+  static Se3ScenarioParams params(double period_s) {
+    Se3ScenarioParams sp;
+    sp.control_period = period_s;
+    return sp;
+  }
+  static Se3SpacecraftParams truth(const Se3ScenarioParams& sp) {
+    Se3SpacecraftParams truth_p;
+    if (se3_chaser_truth_params(sp, truth_p) != Status::ok) fail("se3 truth parameters");
+    return truth_p;
+  }
+  explicit Se3Loop(double period_s)
+      : sp(params(period_s)), chaser(truth(sp)), target(se3_target_params(sp)), plant{&chaser, &target, &sp} {
+    Se3SpacecraftState o0;
+    if (se3_target_initial_state(sp, o0) != Status::ok) fail("se3 target initial state");
+    const Se3SpacecraftState c0 = se3_chaser_initial_state(o0, kSe3InitialPoses[0]);  // state 1
+    Se3PairPlant::put(x, 0, c0);
+    Se3PairPlant::put(x, Se3PairPlant::kBody, o0);
+  }
+  Se3Loop(const Se3Loop&) = delete;  // plant points into this object
+  //! Closes the loop for `steps` ticks at the period, RK4 at h/10 (spec C.1).
+  template <class Control>
+  void run(int steps, Control&& control) {
+    sim::SampledDataOptions opt;
+    opt.t_end = steps * sp.control_period;
+    opt.sample_period = sp.control_period;
+    sim::Rk4Integrator<Se3PairPlant> integ(plant, sp.control_period / 10.0);
+    sim::run_sampled_data(plant, integ, x, opt, control, [](double, const auto&, const auto&) {});
+  }
+};
+
 Rows record_se3(int steps) {
   const replay::Api& sys = replay::kSe3;
   if (sys.init_status() != Status::ok) fail("se3 controller rejected");
-  Se3ScenarioParams sp;  // spec A.8 defaults, as the System's
-  sp.control_period = sys.period_s;
-  Se3SpacecraftParams truth_p;
-  if (se3_chaser_truth_params(sp, truth_p) != Status::ok) fail("se3 truth parameters");
-  const Se3Spacecraft chaser(truth_p), target(se3_target_params(sp));
-  Se3SpacecraftState o0;
-  if (se3_target_initial_state(sp, o0) != Status::ok) fail("se3 target initial state");
-  const Se3SpacecraftState c0 = se3_chaser_initial_state(o0, kSe3InitialPoses[0]);  // state 1
-  const Se3PairPlant plant{&chaser, &target, &sp};
-  Se3PairPlant::State x;
-  Se3PairPlant::put(x, 0, c0);
-  Se3PairPlant::put(x, Se3PairPlant::kBody, o0);
+  Se3Loop loop(sys.period_s);
   Rows rows;
   auto control = [&](double, const Se3PairPlant::State& xs, Vec6& u) {
     Row row;  // chaser then target: C_NB (column-major), R_N, ω, v_B
@@ -178,11 +204,46 @@ Rows record_se3(int steps) {
     sys.command(u.data());
     rows.push_back(row);
   };
-  sim::SampledDataOptions opt;
-  opt.t_end = steps * sp.control_period;
-  opt.sample_period = sp.control_period;
-  sim::Rk4Integrator<Se3PairPlant> integ(plant, sp.control_period / 10.0);  // spec C.1: h_c/10
-  sim::run_sampled_data(plant, integ, x, opt, control, [](double, const auto&, const auto&) {});
+  loop.run(steps, control);
+  return rows;
+}
+
+//! se3_f: the float law's own loop (state 1, RK4 at h/10). The row carries the desired state,
+//! computed here in double from the target's model as the float scenario's ground code does, and
+//! the law's raw command goes through sat -> Q here (the actuator, double), as in se3-ptc.
+Rows record_se3_f(int steps) {
+  const replay::Api& sys = replay::kSe3F;
+  if (sys.init_status() != Status::ok) fail("se3_f controller rejected");
+  Se3Loop loop(sys.period_s);
+  CompositeQuantizer<6> quantizer(seed003_quantizer_params());
+  const Vec6 limit = se3_actuator_limits(loop.sp);
+  if (quantizer.status() != Status::ok) fail("se3 quantizer");
+  Rows rows;
+  auto control = [&](double, const Se3PairPlant::State& xs, Vec6& u) {
+    const Se3SpacecraftState c = Se3PairPlant::body(xs, 0), o = Se3PairPlant::body(xs, Se3PairPlant::kBody);
+    Se3DesiredState d;
+    if (se3_desired_state(loop.target, o, loop.sp, d) != Status::ok) fail("se3_f desired state");
+    Row row;  // chaser C_NB (column-major), R_N, ω, v_B; desired C_ND, R_N, ω_d, v_d, ω̇_d, v̇_d
+    append(row, c.C_NB.reshaped());
+    append(row, c.R_N);
+    append(row, c.omega_BN_B);
+    append(row, c.v_B);
+    append(row, d.C_ND.reshaped());
+    append(row, d.R_N);
+    append(row, d.omega_DN_D);
+    append(row, d.v_D);
+    append(row, d.omega_dot_D);
+    append(row, d.v_dot_D);
+    step(sys, row);
+    Vec6 u_law;
+    sys.command(u_law.data());
+    Vec6 u_c;
+    const Status sq = saturate_then_quantize<6>(u_law, limit, quantizer, u_c);
+    if (sq != Status::ok && sq != Status::saturated) fail("se3_f sat/Q");
+    u = u_c;
+    rows.push_back(row);
+  };
+  loop.run(steps, control);
   return rows;
 }
 
@@ -306,7 +367,7 @@ void write_header(const char* path, const char* name, const char* what, const Ro
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) fail("usage: record_inputs <hybrid|hybrid_f|ppc|ppc_f|se3|dragfree|attitude|attitude_f> <out.hpp> <steps>");
+  if (argc != 4) fail("usage: record_inputs <hybrid|hybrid_f|ppc|ppc_f|se3|se3_f|dragfree|attitude|attitude_f> <out.hpp> <steps>");
   const std::string name = argv[1];
   const int steps = std::atoi(argv[3]);
   if (steps < 1) fail("steps must be >= 1");
@@ -328,6 +389,9 @@ int main(int argc, char** argv) {
     } else if (name == "se3") {
       rows = record_se3(steps);
       what = "seed 003 se3-ptc closed loop (state 1), 8 Hz";
+    } else if (name == "se3_f") {
+      rows = record_se3_f(steps);
+      what = "seed 003 se3-ptc closed loop (state 1, float law), 8 Hz";
     } else if (name == "dragfree") {
       rows = record_dragfree(steps);
       what = "seed 004 dragfree-adrc closed loop, h = 0.1 s";

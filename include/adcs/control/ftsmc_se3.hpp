@@ -22,36 +22,63 @@
 namespace adcs {
 
 //! Gains; channels [rotation x3; translation x3]. Defaults: spec §A.8 "Proposed Table 2" [A]
-//! (the paper's Table 2 was lost).
-struct FtsmcSe3Params {
-  double p_s = 0.5;   //!< [-] S exponent r = 1 − p_s = 0.5
-  double eps = 0.01;  //!< [rad | m] switch of S
-  Vec6 C1 = (Vec6() << 0.05, 0.05, 0.05, 0.03, 0.03, 0.03).finished();  //!< [1/s]
-  Vec6 C2 = (Vec6() << 0.1, 0.1, 0.1, 0.2, 0.2, 0.2).finished();
-  Vec6 K_a = Vec6::Constant(0.5);   //!< [1/s]
-  Vec6 K_b = Vec6::Constant(0.05);
-  double rho = 0.5;                 //!< [-] power of the reaching term
-  double k_s = 0.0;                 //!< switching gain (0 in Table 2)
-  double phi = 0.01;                //!< tanh boundary layer
-  double period_s = 0.125;          //!< [s] control period (seed 003: 8 Hz, GIVEN)
-  Se3SpacecraftParams nominal{};    //!< J0, m0: the controller's model of the chaser (no default)
+//! (the paper's Table 2 was lost). Scalar S (issue 19): `FtsmcSe3Params` is the double instance.
+template <class S = double>
+struct FtsmcSe3ParamsT {
+  using V6 = Vec<6, S>;
+  S p_s = S(0.5);   //!< [-] S exponent r = 1 − p_s = 0.5
+  S eps = S(0.01);  //!< [rad | m] switch of S
+  V6 C1 = (V6() << S(0.05), S(0.05), S(0.05), S(0.03), S(0.03), S(0.03)).finished();  //!< [1/s]
+  V6 C2 = (V6() << S(0.1), S(0.1), S(0.1), S(0.2), S(0.2), S(0.2)).finished();
+  V6 K_a = V6::Constant(S(0.5));   //!< [1/s]
+  V6 K_b = V6::Constant(S(0.05));
+  S rho = S(0.5);                  //!< [-] power of the reaching term
+  S k_s = S(0);                    //!< switching gain (0 in Table 2)
+  S phi = S(0.01);                 //!< tanh boundary layer
+  S period_s = S(0.125);           //!< [s] control period (seed 003: 8 Hz, GIVEN)
+  Se3SpacecraftParamsT<S> nominal{};  //!< J0, m0: the controller's model of the chaser (no default)
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed tick: zero wrench, or hold
+
+  //! The same parameters in another scalar (each value rounded once; validated by the law).
+  template <class U>
+  FtsmcSe3ParamsT<U> cast() const noexcept {
+    FtsmcSe3ParamsT<U> q;
+    q.p_s = narrow_scalar<U>(p_s);
+    q.eps = narrow_scalar<U>(eps);
+    q.C1 = scalar_cast<U>(C1);
+    q.C2 = scalar_cast<U>(C2);
+    q.K_a = scalar_cast<U>(K_a);
+    q.K_b = scalar_cast<U>(K_b);
+    q.rho = narrow_scalar<U>(rho);
+    q.k_s = narrow_scalar<U>(k_s);
+    q.phi = narrow_scalar<U>(phi);
+    q.period_s = narrow_scalar<U>(period_s);
+    q.nominal = nominal.template cast<U>();
+    q.on_failure = on_failure;
+    return q;
+  }
 };
+using FtsmcSe3Params = FtsmcSe3ParamsT<double>;
 
 //! The sliding variable of the tick.
-struct FtsmcSe3Diagnostics {
-  Vec6 s = Vec6::Zero();  //!< [rad/s | m/s] s = η̇ + C1 η + C2 S(η)
+template <class S = double>
+struct FtsmcSe3DiagnosticsT {
+  Vec<6, S> s = Vec<6, S>::Zero();  //!< [rad/s | m/s] s = η̇ + C1 η + C2 S(η)
 };
+using FtsmcSe3Diagnostics = FtsmcSe3DiagnosticsT<double>;
 
-class FtsmcSe3 {
+//! Scalar S (issue 19): `FtsmcSe3` is the double instance; in float see PrescribedTimeSe3T.
+template <class S = double>
+class FtsmcSe3T {
  public:
-  using Params = FtsmcSe3Params;
-  using Input = Se3TrackingInput;
-  using Output = Wrench;
-  using Diagnostics = FtsmcSe3Diagnostics;
+  using Params = FtsmcSe3ParamsT<S>;
+  using Input = Se3TrackingInputT<S>;
+  using Output = WrenchT<S>;
+  using Diagnostics = FtsmcSe3DiagnosticsT<S>;
+  using V6 = Vec<6, S>;
 
-  explicit FtsmcSe3(const Params& p) noexcept
-      : p_(p), nominal_(p.nominal), S_(NonsingularPowerParams{p.p_s, p.eps}) {
+  explicit FtsmcSe3T(const Params& p) noexcept
+      : p_(p), nominal_(p.nominal), S_(NonsingularPowerParamsT<S>{p.p_s, p.eps}) {
     const bool ok = finite_nonnegative(p_.C1) && finite_nonnegative(p_.C2) && finite_nonnegative(p_.K_a) &&
                     finite_nonnegative(p_.K_b) && finite_positive(p_.rho) && finite_nonnegative(p_.k_s) &&
                     finite_positive(p_.phi) && finite_positive(p_.period_s) && nominal_.status() == Status::ok &&
@@ -65,49 +92,51 @@ class FtsmcSe3 {
   //! (Se3Spacecraft). A refused law answers invalid_parameter from every step() with its
   //! failure command.
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return p_.period_s; }
+  S period_s() const noexcept { return p_.period_s; }
   const Params& params() const noexcept { return p_; }
   void reset() noexcept { u_.setZero(); }
-  const Vec6& command() const noexcept { return u_; }
+  const V6& command() const noexcept { return u_; }
   //! The sliding variable of the last good tick.
-  const Vec6& sliding_variable() const noexcept { return s_; }
+  const V6& sliding_variable() const noexcept { return s_; }
 
   //! One control tick. On a status that is not usable u is the failure command (zero wrench, or the last good
   //! command under on_failure = hold_last).
   [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
-    Se3TrackingError e;
+    Se3TrackingErrorT<S> e;
     const Status se = se3_law_error(status_, in.state, in.desired, nominal_, e);
     if (se != Status::ok) {
-      out = Wrench::from_stacked(failure_command(p_.on_failure, u_, Vec6(Vec6::Zero())));
+      out = Output::from_stacked(failure_command(p_.on_failure, u_, V6(V6::Zero())));
       return se;
     }
-    const Vec6 s = e.eta_dot + p_.C1.cwiseProduct(e.eta) + p_.C2.cwiseProduct(S_.value(e.eta));
-    Vec6 reach;
+    const V6 s = e.eta_dot + p_.C1.cwiseProduct(e.eta) + p_.C2.cwiseProduct(S_.value(e.eta));
+    V6 reach;
     for (int i = 0; i < 6; ++i)
       reach(i) = p_.K_a(i) * s(i) + p_.K_b(i) * sig(s(i), p_.rho) + p_.k_s * std::tanh(s(i) / p_.phi);
-    const Vec6 nu = -e.G_dot_xi_e - e.G.times(e.F0) - p_.C1.cwiseProduct(e.eta_dot) -
-                    p_.C2.cwiseProduct(S_.derivative(e.eta)).cwiseProduct(e.eta_dot) - reach;
-    const Vec6 u_new = se3_apply_inertia(nominal_.params(), e.G.inverse_times(nu));
+    const V6 nu = -e.G_dot_xi_e - e.G.times(e.F0) - p_.C1.cwiseProduct(e.eta_dot) -
+                  p_.C2.cwiseProduct(S_.derivative(e.eta)).cwiseProduct(e.eta_dot) - reach;
+    const V6 u_new = se3_apply_inertia(nominal_.params(), e.G.inverse_times(nu));
     if (!all_finite(u_new)) {
-      out = Wrench::from_stacked(failure_command(p_.on_failure, u_, Vec6(Vec6::Zero())));
+      out = Output::from_stacked(failure_command(p_.on_failure, u_, V6(V6::Zero())));
       return Status::out_of_range;
     }
     u_ = u_new;
     s_ = s;
-    out = Wrench::from_stacked(u_);
+    out = Output::from_stacked(u_);
     if (diag) diag->s = s;
     return Status::ok;
   }
 
  private:
   Params p_;
-  Se3Spacecraft nominal_;
-  NonsingularPower S_;
+  Se3SpacecraftT<S> nominal_;
+  NonsingularPowerT<S> S_;
   Status status_ = Status::ok;
-  Vec6 u_ = Vec6::Zero();
-  Vec6 s_ = Vec6::Zero();
+  V6 u_ = V6::Zero();
+  V6 s_ = V6::Zero();
 };
+using FtsmcSe3 = FtsmcSe3T<double>;
 
 ADCS_ASSERT_COMPONENT(FtsmcSe3);
+ADCS_ASSERT_COMPONENT(FtsmcSe3T<float>);
 
 }  // namespace adcs

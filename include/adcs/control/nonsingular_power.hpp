@@ -27,101 +27,109 @@ namespace detail {
 //! correctly rounded pow) but are IEEE-exact operations: bit-identical on the host and on the
 //! Cortex-M7, where newlib's pow differs from glibc's in the last ulp, and ~20 instead of several
 //! hundred target instructions (issue 7 budget; 24 pow calls per BsPdTC step before).
-//! Other exponents stay with std::pow.
-inline double abs_pow(double x, double a) noexcept {
-  if (a == 0.5) return std::sqrt(x);  // p = 0.5 of seed 003 (spec §A.8): sig^{1−p}
-  if (a == 1.0) return x;
-  if (a == 2.0) return x * x;
-  if (a == 1.5) return x * std::sqrt(x);   // sig^{1+p}, p = 0.5
-  if (a == -0.5) return 1.0 / std::sqrt(x);  // S'(z) factor |z|^{−p}, p = 0.5
+//! Other exponents stay with std::pow (powf in float).
+template <class S>
+inline S abs_pow(S x, identity_t<S> a) noexcept {
+  if (a == S(0.5)) return std::sqrt(x);  // p = 0.5 of seed 003 (spec §A.8): sig^{1−p}
+  if (a == S(1)) return x;
+  if (a == S(2)) return x * x;
+  if (a == S(1.5)) return x * std::sqrt(x);   // sig^{1+p}, p = 0.5
+  if (a == S(-0.5)) return S(1) / std::sqrt(x);  // S'(z) factor |z|^{−p}, p = 0.5
   return std::pow(x, a);
 }
 }  // namespace detail
 
 //! sig^a(z) = sign(z)|z|^a with sign(0) = 0, so sig^a(0) = 0 for every a (a > 0 expected).
-inline double sig(double z, double a) noexcept {
-  if (z == 0.0) return 0.0;
+template <class S>
+inline S sig(S z, identity_t<S> a) noexcept {
+  if (z == S(0)) return S(0);
   return std::copysign(detail::abs_pow(std::fabs(z), a), z);
 }
 
 //! sig^a applied componentwise.
-template <int M>
-Vec<M> sig(const Vec<M>& z, double a) noexcept {
-  Vec<M> out;
+template <int M, class S>
+Vec<M, S> sig(const Vec<M, S>& z, identity_t<S> a) noexcept {
+  Vec<M, S> out;
   for (int i = 0; i < M; ++i) out(i) = sig(z(i), a);
   return out;
 }
 
-struct NonsingularPowerParams {
-  double p = 0.5;     //!< [-] power p ∈ (0,1); S ~ sig^{1−p} outside the patch (spec §A.8 [A])
-  double eps = 0.01;  //!< [z units: rad, m, rad/s, m/s] patch half-width ε > 0 (spec §A.8 [A])
+//! Scalar S (issue 19): the float instance serves the float SE(3) laws.
+template <class S = double>
+struct NonsingularPowerParamsT {
+  S p = S(0.5);     //!< [-] power p ∈ (0,1); S ~ sig^{1−p} outside the patch (spec §A.8 [A])
+  S eps = S(0.01);  //!< [z units: rad, m, rad/s, m/s] patch half-width ε > 0 (spec §A.8 [A])
 };
+using NonsingularPowerParams = NonsingularPowerParamsT<double>;
 
 //! True when 0 < p < 1 and ε > 0 (both finite), the domain where S is C¹ and l1, l2 are finite.
-inline bool valid(const NonsingularPowerParams& q) noexcept {
-  return std::isfinite(q.p) && std::isfinite(q.eps) && q.p > 0.0 && q.p < 1.0 && q.eps > 0.0;
+template <class S>
+inline bool valid(const NonsingularPowerParamsT<S>& q) noexcept {
+  return std::isfinite(q.p) && std::isfinite(q.eps) && q.p > S(0) && q.p < S(1) && q.eps > S(0);
 }
 
 //! S(z;ε) and S'(z;ε) for one (p, ε), with l1, l2 computed once at construction. With invalid
 //! parameters status() is invalid_parameter and value()/derivative() return 0 (a controller
 //! term that vanishes instead of a non-finite one); check status() after construction. A
 //! non-finite z gives a non-finite result: callers check their inputs.
-class NonsingularPower {
+template <class S = double>
+class NonsingularPowerT {
  public:
-  explicit NonsingularPower(const NonsingularPowerParams& q = NonsingularPowerParams{}) noexcept
-      : q_(q) {
+  using Params = NonsingularPowerParamsT<S>;
+  explicit NonsingularPowerT(const Params& q = Params{}) noexcept : q_(q) {
     if (!ADCS_CHECK(valid(q_), "NonsingularPower: need p in (0,1), eps > 0")) {
       status_ = Status::invalid_parameter;
       return;
     }
-    one_minus_p_ = 1.0 - q_.p;
-    l1_ = (1.0 + q_.p) * std::pow(q_.eps, -q_.p);       // spec §A.5
-    l2_ = -q_.p * std::pow(q_.eps, -1.0 - q_.p);        // spec §A.5
+    one_minus_p_ = S(1) - q_.p;
+    l1_ = (S(1) + q_.p) * std::pow(q_.eps, -q_.p);       // spec §A.5
+    l2_ = -q_.p * std::pow(q_.eps, S(-1) - q_.p);        // spec §A.5
   }
 
   Status status() const noexcept { return status_; }
-  const NonsingularPowerParams& params() const noexcept { return q_; }
-  double l1() const noexcept { return l1_; }  //!< [z^{−p}] slope of S at 0, S'(0)
-  double l2() const noexcept { return l2_; }  //!< [z^{−1−p}] quadratic coefficient of the patch
+  const Params& params() const noexcept { return q_; }
+  S l1() const noexcept { return l1_; }  //!< [z^{−p}] slope of S at 0, S'(0)
+  S l2() const noexcept { return l2_; }  //!< [z^{−1−p}] quadratic coefficient of the patch
 
   //! S(z;ε). The patch is written z (l1 + l2|z|) = l1 z + l2 sign(z) z².
-  double value(double z) const noexcept {
-    if (status_ != Status::ok) return 0.0;
-    const double a = std::fabs(z);
+  S value(S z) const noexcept {
+    if (status_ != Status::ok) return S(0);
+    const S a = std::fabs(z);
     if (a > q_.eps) return std::copysign(detail::abs_pow(a, one_minus_p_), z);
     return z * (l1_ + l2_ * a);
   }
 
   //! S'(z;ε) = dS/dz.
-  double derivative(double z) const noexcept {
-    if (status_ != Status::ok) return 0.0;
-    const double a = std::fabs(z);
+  S derivative(S z) const noexcept {
+    if (status_ != Status::ok) return S(0);
+    const S a = std::fabs(z);
     if (a > q_.eps) return one_minus_p_ * detail::abs_pow(a, -q_.p);
-    return l1_ + 2.0 * l2_ * a;
+    return l1_ + S(2) * l2_ * a;
   }
 
   //! S applied componentwise.
   template <int M>
-  Vec<M> value(const Vec<M>& z) const noexcept {
-    Vec<M> out;
+  Vec<M, S> value(const Vec<M, S>& z) const noexcept {
+    Vec<M, S> out;
     for (int i = 0; i < M; ++i) out(i) = value(z(i));
     return out;
   }
 
   //! S' applied componentwise (the diagonal of ∂S(z)/∂z).
   template <int M>
-  Vec<M> derivative(const Vec<M>& z) const noexcept {
-    Vec<M> out;
+  Vec<M, S> derivative(const Vec<M, S>& z) const noexcept {
+    Vec<M, S> out;
     for (int i = 0; i < M; ++i) out(i) = derivative(z(i));
     return out;
   }
 
  private:
-  NonsingularPowerParams q_;
-  double one_minus_p_ = 1.0;
-  double l1_ = 0.0;
-  double l2_ = 0.0;
+  Params q_;
+  S one_minus_p_ = S(1);
+  S l1_ = S(0);
+  S l2_ = S(0);
   Status status_ = Status::ok;
 };
+using NonsingularPower = NonsingularPowerT<double>;
 
 }  // namespace adcs

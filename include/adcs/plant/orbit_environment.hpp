@@ -28,48 +28,62 @@ namespace adcs {
 inline constexpr double kOrbitMinRadius = 1.0;
 
 //! Earth constants of seed 003 (all GIVEN by the paper, spec §A.1 [P]). J2 = 0 turns the J2
-//! force off (point-mass gravity only), e.g. for energy-conservation checks.
-struct OrbitEnvironmentParams {
-  double mu = 3.986e14;     //!< [m³/s²] Earth gravitational parameter μ (GIVEN)
-  double J2 = 1.08263e-3;   //!< [-] second zonal harmonic (GIVEN)
-  double R_E = 6378e3;      //!< [m] Earth equatorial radius (GIVEN)
+//! force off (point-mass gravity only), e.g. for energy-conservation checks. Scalar S (issue 19):
+//! the float instance is the nominal model of a float SE(3) law (μ, R_E⁵-sized products such as
+//! r⁵ ≈ 1.7e34 m⁵ at 400 km stay inside float's range, 3.4e38).
+template <class S = double>
+struct OrbitEnvironmentParamsT {
+  S mu = S(3.986e14);     //!< [m³/s²] Earth gravitational parameter μ (GIVEN)
+  S J2 = S(1.08263e-3);   //!< [-] second zonal harmonic (GIVEN)
+  S R_E = S(6378e3);      //!< [m] Earth equatorial radius (GIVEN)
+  //! The same constants in another scalar (each rounded once).
+  template <class T>
+  OrbitEnvironmentParamsT<T> cast() const noexcept {
+    return OrbitEnvironmentParamsT<T>{narrow_scalar<T>(mu), narrow_scalar<T>(J2), narrow_scalar<T>(R_E)};
+  }
 };
+using OrbitEnvironmentParams = OrbitEnvironmentParamsT<double>;
 
 //! True when μ > 0, R_E > 0 and J2 finite (J2 may be 0 or of either sign).
-inline bool orbit_environment_valid(const OrbitEnvironmentParams& env) noexcept {
-  return std::isfinite(env.mu) && env.mu > 0.0 && std::isfinite(env.R_E) && env.R_E > 0.0 &&
+template <class S>
+inline bool orbit_environment_valid(const OrbitEnvironmentParamsT<S>& env) noexcept {
+  return std::isfinite(env.mu) && env.mu > S(0) && std::isfinite(env.R_E) && env.R_E > S(0) &&
          std::isfinite(env.J2);
 }
 
 //! Gravity-gradient torque τ_gg = (3μ/r⁵) R_B × (J_B R_B) [N m], body components, from the
 //! position R_B [m] in body components (r = ‖R_B‖ ≥ kOrbitMinRadius).   spec §A.2.2
 //! Zero when R_B lies along a principal axis of J_B (J R_B ∥ R_B).
-inline Vec3 gravity_gradient_torque_B(const Mat3& J_B, const Vec3& R_B, double mu) noexcept {
-  const double r2 = R_B.squaredNorm();
-  const double r5 = r2 * r2 * std::sqrt(r2);
-  return (3.0 * mu / r5) * R_B.cross(J_B * R_B);
+template <class S>
+inline Vec<3, S> gravity_gradient_torque_B(const Mat<3, 3, S>& J_B, const Vec<3, S>& R_B, identity_t<S> mu) noexcept {
+  const S r2 = R_B.squaredNorm();
+  const S r5 = r2 * r2 * std::sqrt(r2);
+  return (S(3) * mu / r5) * R_B.cross(J_B * R_B);
 }
 
 //! Point-mass gravity force f_g = −(m μ / r³) R [N], in the components of R (body: R_B gives the
 //! spec's f_g; ECI: R_N gives F_g).   spec §A.2.2
-inline Vec3 point_mass_gravity_force(double m, const Vec3& R, double mu) noexcept {
-  const double r2 = R.squaredNorm();
+template <class S>
+inline Vec<3, S> point_mass_gravity_force(identity_t<S> m, const Vec<3, S>& R, identity_t<S> mu) noexcept {
+  const S r2 = R.squaredNorm();
   return (-m * mu / (r2 * std::sqrt(r2))) * R;
 }
 
 //! J2 force F_J2 [N] in ECI components, from the ECI position R_N [m] (Z = polar axis).
 //! At Z = 0 it is radial, inward, of magnitude (3/2) J2 (R_E/r)² m μ / r².   spec §A.2.2
-inline Vec3 j2_force_N(double m, const Vec3& R_N, const OrbitEnvironmentParams& env) noexcept {
-  const double r2 = R_N.squaredNorm();
-  const double r5 = r2 * r2 * std::sqrt(r2);
-  const double k = -1.5 * m * env.mu * env.J2 * env.R_E * env.R_E / r5;
-  const double z2 = 5.0 * R_N(2) * R_N(2) / r2;  // 5 Z²/r²
-  return Vec3(k * (1.0 - z2) * R_N(0), k * (1.0 - z2) * R_N(1), k * (3.0 - z2) * R_N(2));
+template <class S>
+inline Vec<3, S> j2_force_N(identity_t<S> m, const Vec<3, S>& R_N, const OrbitEnvironmentParamsT<S>& env) noexcept {
+  const S r2 = R_N.squaredNorm();
+  const S r5 = r2 * r2 * std::sqrt(r2);
+  const S k = S(-1.5) * m * env.mu * env.J2 * env.R_E * env.R_E / r5;
+  const S z2 = S(5) * R_N(2) * R_N(2) / r2;  // 5 Z²/r²
+  return Vec<3, S>(k * (S(1) - z2) * R_N(0), k * (S(1) - z2) * R_N(1), k * (S(3) - z2) * R_N(2));
 }
 
 //! J2 force in body components f_J2 = C_NBᵀ F_J2 [N].   spec §A.2.2
-inline Vec3 j2_force_B(double m, const Mat3& C_NB, const Vec3& R_N,
-                       const OrbitEnvironmentParams& env) noexcept {
+template <class S>
+inline Vec<3, S> j2_force_B(identity_t<S> m, const Mat<3, 3, S>& C_NB, const Vec<3, S>& R_N,
+                            const OrbitEnvironmentParamsT<S>& env) noexcept {
   return C_NB.transpose() * j2_force_N(m, R_N, env);
 }
 

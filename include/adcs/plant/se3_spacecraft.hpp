@@ -21,6 +21,7 @@
 // Units: SI throughout (m, m/s, rad, rad/s, kg, kg m², N, N m, s); degrees only in the A.8 table.
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include <Eigen/Cholesky>
 
@@ -41,63 +42,89 @@ inline constexpr double kSe3RadPerDeg = 3.14159265358979323846 / 180.0;
 // Plant
 
 //! Configuration and generalised velocity of one rigid spacecraft (chaser or target).   seed 003 eq. (1)
-struct Se3SpacecraftState {
-  Mat3 C_NB = Mat3::Identity();    //!< [-] spec's C: active rotation body → ECI (v_N = C_NB v_B)
-  Vec3 R_N = Vec3::Zero();         //!< [m] centre-of-mass position, ECI (origin Earth centre)
-  Vec3 omega_BN_B = Vec3::Zero();  //!< [rad/s] ω, body rate w.r.t. ECI, body components
-  Vec3 v_B = Vec3::Zero();         //!< [m/s] v, inertial velocity in body components (Ṙ = C v)
+//! Scalar S (issue 19): a float SE(3) law reads its measured state in float. Note what that
+//! costs: R_N ≈ 6.8e6 m has a float ulp of 0.5 m and v_B ≈ 7.7 km/s one of 4.9e-4 m/s, so a
+//! float state cannot carry a relative position finer than ~0.5 m (docs/TARGET.md).
+template <class S = double>
+struct Se3SpacecraftStateT {
+  Mat<3, 3, S> C_NB = Mat<3, 3, S>::Identity();  //!< [-] spec's C: active rotation body → ECI (v_N = C_NB v_B)
+  Vec<3, S> R_N = Vec<3, S>::Zero();             //!< [m] centre-of-mass position, ECI (origin Earth centre)
+  Vec<3, S> omega_BN_B = Vec<3, S>::Zero();      //!< [rad/s] ω, body rate w.r.t. ECI, body components
+  Vec<3, S> v_B = Vec<3, S>::Zero();             //!< [m/s] v, inertial velocity in body components (Ṙ = C v)
 
   //! ξ = [ω; v] [rad/s; m/s].   seed 003 eq. (2)
-  Vec6 xi() const noexcept {
+  Vec<6, S> xi() const noexcept {
     return stack3(omega_BN_B, v_B);
   }
   //! Inertial velocity in ECI components V_N = C_NB v_B [m/s].
-  Vec3 V_N() const noexcept { return C_NB * v_B; }
+  Vec<3, S> V_N() const noexcept { return C_NB * v_B; }
+  //! The same state in another scalar (each value rounded once; beyond T's range: ±Inf).
+  template <class T>
+  Se3SpacecraftStateT<T> cast() const noexcept {
+    return Se3SpacecraftStateT<T>{scalar_cast<T>(C_NB), scalar_cast<T>(R_N), scalar_cast<T>(omega_BN_B),
+                                  scalar_cast<T>(v_B)};
+  }
 };
+using Se3SpacecraftState = Se3SpacecraftStateT<double>;
 
 //! Time derivatives at one state. Ċ = C_NB [ω]× is implied (integrate it on the group, see
 //! se3_spacecraft_attitude_step), so it is not stored.
-struct Se3SpacecraftRates {
-  Vec3 R_dot_N = Vec3::Zero();      //!< [m/s] Ṙ = C v, ECI
-  Vec3 omega_dot_B = Vec3::Zero();  //!< [rad/s²] ω̇, body
-  Vec3 v_dot_B = Vec3::Zero();      //!< [m/s²] v̇, body
+template <class S = double>
+struct Se3SpacecraftRatesT {
+  Vec<3, S> R_dot_N = Vec<3, S>::Zero();      //!< [m/s] Ṙ = C v, ECI
+  Vec<3, S> omega_dot_B = Vec<3, S>::Zero();  //!< [rad/s²] ω̇, body
+  Vec<3, S> v_dot_B = Vec<3, S>::Zero();      //!< [m/s²] v̇, body
 
   //! ξ̇ = [ω̇; v̇].
-  Vec6 xi_dot() const noexcept {
+  Vec<6, S> xi_dot() const noexcept {
     return stack3(omega_dot_B, v_dot_B);
   }
 };
+using Se3SpacecraftRates = Se3SpacecraftRatesT<double>;
 
 //! Mass properties and environment of one spacecraft. J_B and m have no default (NaN until set:
 //! refused; se3_target_params, se3_chaser_nominal_params and se3_chaser_truth_params give seed
 //! 003's); the environment defaults to seed 003's Earth constants (GIVEN).
-struct Se3SpacecraftParams {
-  Mat3 J_B = Mat3::Constant(kUnset);  //!< [kg m²] inertia about the centre of mass, body (SPD)
-  double m = kUnset;                  //!< [kg] mass (> 0)
-  OrbitEnvironmentParams env{};    //!< Earth constants (μ, J2, R_E)
+template <class S = double>
+struct Se3SpacecraftParamsT {
+  Mat<3, 3, S> J_B = Mat<3, 3, S>::Constant(unset_v<S>);  //!< [kg m²] inertia about the centre of mass, body (SPD)
+  S m = unset_v<S>;                                       //!< [kg] mass (> 0)
+  OrbitEnvironmentParamsT<S> env{};                       //!< Earth constants (μ, J2, R_E)
+  //! The same parameters in another scalar (each value rounded once; validated by the model).
+  template <class T>
+  Se3SpacecraftParamsT<T> cast() const noexcept {
+    return Se3SpacecraftParamsT<T>{scalar_cast<T>(J_B), narrow_scalar<T>(m), env.template cast<T>()};
+  }
 };
+using Se3SpacecraftParams = Se3SpacecraftParamsT<double>;
 
 //! Continuous-time SE(3) plant of spec §A.2.2 for one spacecraft. Stateless after construction
 //! (J⁻¹ precomputed), so one object serves the chaser truth, the nominal controller model or the
-//! target.
-class Se3Spacecraft {
+//! target. Se3SpacecraftT<float> is the nominal model of a float law (issue 19).
+template <class S = double>
+class Se3SpacecraftT {
  public:
-  using State = Se3SpacecraftState;
-  using Rates = Se3SpacecraftRates;
-  using Params = Se3SpacecraftParams;
+  using State = Se3SpacecraftStateT<S>;
+  using Rates = Se3SpacecraftRatesT<S>;
+  using Params = Se3SpacecraftParamsT<S>;
+  using M3 = Mat<3, 3, S>;
+  using V3 = Vec<3, S>;
+  using V6 = Vec<6, S>;
 
   //! Validates the parameters: J symmetric positive definite, m > 0, valid environment.
   //! status() says the outcome (the failure hook is called on error).
-  explicit Se3Spacecraft(const Params& p) noexcept : p_(p) {
-    const Eigen::LDLT<Mat3> ldlt(p_.J_B);
-    const bool symmetric = (p_.J_B - p_.J_B.transpose()).norm() <= 1e-12 * p_.J_B.norm();
+  explicit Se3SpacecraftT(const Params& p) noexcept : p_(p) {
+    const Eigen::LDLT<M3> ldlt(p_.J_B);
+    // Relative asymmetry accepted: 1e-12 in double (as before), ~100 ulp in float.
+    const S sym_tol = std::is_same_v<S, float> ? S(1e-5) : S(1e-12);
+    const bool symmetric = (p_.J_B - p_.J_B.transpose()).norm() <= sym_tol * p_.J_B.norm();
     const bool ok = all_finite(p_.J_B) && symmetric && ldlt.info() == Eigen::Success &&
-                    ldlt.isPositive() && (ldlt.vectorD().array() > 0.0).all() &&
-                    std::isfinite(p_.m) && p_.m > 0.0 && orbit_environment_valid(p_.env);
+                    ldlt.isPositive() && (ldlt.vectorD().array() > S(0)).all() &&
+                    std::isfinite(p_.m) && p_.m > S(0) && orbit_environment_valid(p_.env);
     // Column-wise vector solves: a matrix right-hand side would pull in Eigen's blocked
     // triangular solver and its (never taken, but linked) heap fallback.
     if (ok) {
-      for (int i = 0; i < 3; ++i) J_inv_.col(i) = ldlt.solve(Vec3::Unit(i));
+      for (int i = 0; i < 3; ++i) J_inv_.col(i) = ldlt.solve(V3::Unit(i));
     }
     status_ = ADCS_CHECK(ok, "Se3Spacecraft: J must be SPD, m > 0, mu > 0, R_E > 0")
                   ? Status::ok
@@ -109,20 +136,20 @@ class Se3Spacecraft {
   //! invalid_parameter from derivative() with `out` untouched.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
-  const Mat3& J_inv() const noexcept { return J_inv_; }
+  const M3& J_inv() const noexcept { return J_inv_; }
 
   //! Ξ = diag(J, m I3) [kg m², kg].
-  Mat6 inertia() const noexcept {
-    Mat6 Xi = Mat6::Zero();
-    Xi.topLeftCorner<3, 3>() = p_.J_B;
-    Xi.bottomRightCorner<3, 3>() = p_.m * Mat3::Identity();
+  Mat<6, 6, S> inertia() const noexcept {
+    Mat<6, 6, S> Xi = Mat<6, 6, S>::Zero();
+    Xi.template topLeftCorner<3, 3>() = p_.J_B;
+    Xi.template bottomRightCorner<3, 3>() = p_.m * M3::Identity();
     return Xi;
   }
 
   //! Gravity-related wrench M_g = [τ_gg; f_g + f_J2] [N m; N], body components. Precondition
   //! ‖R_N‖ ≥ kOrbitMinRadius (derivative() checks it).   spec §A.2.2, seed 003 eq. (5)
-  Vec6 gravity_wrench(const State& x) const noexcept {
-    const Vec3 R_B = x.C_NB.transpose() * x.R_N;  // R_b = Cᵀ R
+  V6 gravity_wrench(const State& x) const noexcept {
+    const V3 R_B = x.C_NB.transpose() * x.R_N;  // R_b = Cᵀ R
     return stack3(gravity_gradient_torque_B(p_.J_B, R_B, p_.env.mu),
                   point_mass_gravity_force(p_.m, R_B, p_.env.mu) + j2_force_B(p_.m, x.C_NB, x.R_N, p_.env));
   }
@@ -132,22 +159,22 @@ class Se3Spacecraft {
   //! Returns invalid_parameter if construction failed, non_finite_input for NaN/Inf inputs,
   //! out_of_range when ‖R_N‖ < kOrbitMinRadius or the result overflows; `out` is untouched on
   //! any non-ok status.
-  [[nodiscard]] Status derivative(const State& x, const Vec6& tau_c, const Vec6& tau_d,
+  [[nodiscard]] Status derivative(const State& x, const V6& tau_c, const V6& tau_d,
                                   Rates& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(x.C_NB) || !all_finite(x.R_N) || !all_finite(x.omega_BN_B) ||
         !all_finite(x.v_B) || !all_finite(tau_c) || !all_finite(tau_d)) {
       return Status::non_finite_input;
     }
-    if (!(x.R_N.norm() >= kOrbitMinRadius)) return Status::out_of_range;
-    const Vec3& w = x.omega_BN_B;
-    const Vec3& v = x.v_B;
-    const Vec6 M_g = gravity_wrench(x);
-    const Vec6 tau = M_g + tau_c + tau_d;
+    if (!(x.R_N.norm() >= S(kOrbitMinRadius))) return Status::out_of_range;
+    const V3& w = x.omega_BN_B;
+    const V3& v = x.v_B;
+    const V6 M_g = gravity_wrench(x);
+    const V6 tau = M_g + tau_c + tau_d;
     Rates r;
-    r.R_dot_N.noalias() = x.C_NB * v;                                            // Ṙ = C v
-    r.omega_dot_B.noalias() = J_inv_ * (tau.head<3>() - w.cross(p_.J_B * w));   // J ω̇ = −ω×Jω + …
-    r.v_dot_B = tau.tail<3>() / p_.m - w.cross(v);                               // m v̇ = −m ω×v + …
+    r.R_dot_N.noalias() = x.C_NB * v;                                                      // Ṙ = C v
+    r.omega_dot_B.noalias() = J_inv_ * (tau.template head<3>() - w.cross(p_.J_B * w));    // J ω̇ = −ω×Jω + …
+    r.v_dot_B = tau.template tail<3>() / p_.m - w.cross(v);                                // m v̇ = −m ω×v + …
     if (!all_finite(r.R_dot_N) || !all_finite(r.omega_dot_B) || !all_finite(r.v_dot_B)) {
       return Status::out_of_range;
     }
@@ -157,9 +184,10 @@ class Se3Spacecraft {
 
  private:
   Params p_;
-  Mat3 J_inv_ = Mat3::Identity();
+  M3 J_inv_ = M3::Identity();
   Status status_ = Status::ok;
 };
+using Se3Spacecraft = Se3SpacecraftT<double>;
 
 //! Lie-group attitude update C_NB ← C_NB exp([Δθ]×) for a body-frame rotation increment Δθ [rad]
 //! (e.g. dt·ω̄ of an RK4 step), followed by one symmetric re-orthonormalisation step
@@ -175,33 +203,42 @@ inline void se3_spacecraft_attitude_step(Mat3& C_NB, const Vec3& dtheta_B) noexc
 // Desired configuration, spec §A.2.3 (first block)
 
 //! g_d = g_o χ_d and its body velocity and acceleration (frame D = desired chaser body).
-struct Se3DesiredState {
-  Mat3 C_ND = Mat3::Identity();    //!< [-] C_d = C_o C_χ, desired body → ECI
-  Vec3 R_N = Vec3::Zero();         //!< [m] R_d = R_o + C_o r_χ, ECI
-  Vec3 omega_DN_D = Vec3::Zero();  //!< [rad/s] ω_d = C_χᵀ ω_o
-  Vec3 v_D = Vec3::Zero();         //!< [m/s] v_d = C_χᵀ (v_o + ω_o × r_χ)
-  Vec3 omega_dot_D = Vec3::Zero(); //!< [rad/s²] ω̇_d = C_χᵀ ω̇_o
-  Vec3 v_dot_D = Vec3::Zero();     //!< [m/s²] v̇_d = C_χᵀ (v̇_o + ω̇_o × r_χ)
+template <class S = double>
+struct Se3DesiredStateT {
+  Mat<3, 3, S> C_ND = Mat<3, 3, S>::Identity();    //!< [-] C_d = C_o C_χ, desired body → ECI
+  Vec<3, S> R_N = Vec<3, S>::Zero();               //!< [m] R_d = R_o + C_o r_χ, ECI
+  Vec<3, S> omega_DN_D = Vec<3, S>::Zero();        //!< [rad/s] ω_d = C_χᵀ ω_o
+  Vec<3, S> v_D = Vec<3, S>::Zero();               //!< [m/s] v_d = C_χᵀ (v_o + ω_o × r_χ)
+  Vec<3, S> omega_dot_D = Vec<3, S>::Zero();       //!< [rad/s²] ω̇_d = C_χᵀ ω̇_o
+  Vec<3, S> v_dot_D = Vec<3, S>::Zero();           //!< [m/s²] v̇_d = C_χᵀ (v̇_o + ω̇_o × r_χ)
 
   //! ξ_d = [ω_d; v_d].
-  Vec6 xi() const noexcept {
+  Vec<6, S> xi() const noexcept {
     return stack3(omega_DN_D, v_D);
   }
   //! ξ̇_d = [ω̇_d; v̇_d].
-  Vec6 xi_dot() const noexcept {
+  Vec<6, S> xi_dot() const noexcept {
     return stack3(omega_dot_D, v_dot_D);
   }
+  //! The same desired state in another scalar (each value rounded once; beyond T's range: ±Inf).
+  template <class T>
+  Se3DesiredStateT<T> cast() const noexcept {
+    return Se3DesiredStateT<T>{scalar_cast<T>(C_ND),       scalar_cast<T>(R_N),         scalar_cast<T>(omega_DN_D),
+                               scalar_cast<T>(v_D),        scalar_cast<T>(omega_dot_D), scalar_cast<T>(v_dot_D)};
+  }
 };
+using Se3DesiredState = Se3DesiredStateT<double>;
 
 //! Desired configuration from the target state and its rates, for a CONSTANT relative pose
 //! χ_d = (C_χ, r_χ) (C_χ: desired chaser body → target body; r_χ [m] in target body):
 //!   C_d = C_o C_χ,  R_d = R_o + C_o r_χ,  ξ_d = Ad_{χ_d⁻¹} ξ_o,  ξ̇_d = Ad_{χ_d⁻¹} ξ̇_o
 //! with Ad_{χ⁻¹} = [[C_χᵀ, 0], [−C_χᵀ r_χ×, C_χᵀ]] (ξ̇_d has no Ȧd term because χ_d is
 //! constant).   spec §A.2.3
-inline Se3DesiredState se3_desired_state(const Se3SpacecraftState& target,
-                                         const Se3SpacecraftRates& target_rates,
-                                         const Mat3& C_chi, const Vec3& r_chi) noexcept {
-  Se3DesiredState d;
+template <class S>
+inline Se3DesiredStateT<S> se3_desired_state(const Se3SpacecraftStateT<S>& target,
+                                             const Se3SpacecraftRatesT<S>& target_rates,
+                                             const Mat<3, 3, S>& C_chi, const Vec<3, S>& r_chi) noexcept {
+  Se3DesiredStateT<S> d;
   d.C_ND.noalias() = target.C_NB * C_chi;
   d.R_N = target.R_N + target.C_NB * r_chi;
   d.omega_DN_D.noalias() = C_chi.transpose() * target.omega_BN_B;
