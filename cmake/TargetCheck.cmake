@@ -219,11 +219,13 @@ if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
                    ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step adcs_m4f_hybrid_adaptive_step
                    adcs_m4f_ppc_neural_step adcs_m4f_adaptive_tracking_step adcs_m4f_eso_adrc_attitude_step
                    adcs_m4f_eso_adrc_attitude_init adcs_m4f_prescribed_time_se3_step adcs_m4f_prescribed_time_se3_init
-                   adcs_m4f_ftsmc_se3_step adcs_m4f_ftsmc_se3_init)
+                   adcs_m4f_ftsmc_se3_step adcs_m4f_ftsmc_se3_init adcs_m4f_saturated_quantizer_step
+                   adcs_m4f_saturated_quantizer_init)
   add_test(NAME target_m4f_c_api_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
                    ${_m4f_c_lib} adcs_mrp_pd4f_init adcs_mrp_pd4f_step adcs_rw_alloc4f_init adcs_rw_alloc4f_step
-                   adcs_ppcf_init adcs_ppcf_step adcs_hybrid43f_init adcs_hybrid43f_step)
+                   adcs_ppcf_init adcs_ppcf_step adcs_hybrid43f_init adcs_hybrid43f_step adcs_se3_ptcf_init
+                   adcs_se3_ptcf_step)
   set_tests_properties(target_m4f_no_double target_m4f_c_api_no_double PROPERTIES LABELS target
                        FIXTURES_REQUIRED adcs_target_build)
 endif()

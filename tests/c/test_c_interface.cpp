@@ -20,10 +20,12 @@
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/ppc_neural.hpp"
+#include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/plant/flexible_configurations.hpp"
 #include "adcs/plant/vscmg_configurations.hpp"
 #include "adcs/reference/sinusoidal_euler.hpp"
 #include "adcs/reference/sinusoidal_rate.hpp"
+#include "scenarios/seed003_data.hpp"  // seed 003's scenario data (paper data, not flight code)
 #include "alloc_guard.hpp"  // tests/nomalloc
 #include "counting_new.hpp"
 
@@ -576,6 +578,165 @@ TEST(CInterface, HybridRefusalsAndFailureCommands) {
   }
 }
 
+// ---- Seed 003: the prescribed-time SE(3) law (adcs_se3_ptc, adcs_se3_ptcf) -----------------------
+
+// Seed 003's BsPdTC (spec A.8 Table 1, ζ = 1.05 ϖ of the paper's quantizer, the nominal chaser).
+adcs::PrescribedTimeSe3Params se3_cpp_params() {
+  adcs::PrescribedTimeSe3Params p;
+  p.zeta = adcs::quantization_compensation_gain(adcs::seed003_quantizer_params());
+  p.nominal = adcs::se3_chaser_nominal_params(adcs::Se3ScenarioParams{});
+  return p;
+}
+
+template <class CParams>
+CParams se3_c_params() {
+  using S = std::remove_reference_t<decltype(CParams{}.period_s)>;
+  const adcs::PrescribedTimeSe3Params d = se3_cpp_params();
+  CParams cp{};
+  cp.p = static_cast<S>(d.p);
+  cp.T_s = static_cast<S>(d.T);
+  for (int i = 0; i < 6; ++i) {
+    cp.K2[i] = static_cast<S>(d.K2(i));
+    cp.Lambda[i] = static_cast<S>(d.Lambda(i));
+    cp.Upsilon[i] = static_cast<S>(d.Upsilon(i));
+    cp.K3[i] = static_cast<S>(d.K3(i));
+    cp.Lambda2[i] = static_cast<S>(d.Lambda2(i));
+    cp.Upsilon2[i] = static_cast<S>(d.Upsilon2(i));
+    cp.zeta[i] = static_cast<S>(d.zeta(i));
+  }
+  cp.eps1 = static_cast<S>(d.eps1);
+  cp.eps2 = static_cast<S>(d.eps2);
+  cp.eps_q = static_cast<S>(d.eps_q);
+  cp.a = static_cast<S>(d.a);
+  cp.gamma = static_cast<S>(d.gamma);
+  cp.sigma1 = static_cast<S>(d.sigma1);
+  cp.sigma2 = static_cast<S>(d.sigma2);
+  cp.psi_hat0 = static_cast<S>(d.psi_hat0);
+  cp.period_s = static_cast<S>(d.period_s);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) cp.J0_kgm2[i][j] = static_cast<S>(d.nominal.J_B(i, j));
+  cp.m0_kg = static_cast<S>(d.nominal.m);
+  cp.mu_m3_s2 = static_cast<S>(d.nominal.env.mu);
+  cp.J2 = static_cast<S>(d.nominal.env.J2);
+  cp.R_E_m = static_cast<S>(d.nominal.env.R_E);
+  cp.on_failure = ADCS_FAILURE_SAFE_COMMAND;
+  return cp;
+}
+
+// The paper's pair at state 1 with a relative twist that varies with k (every term active).
+adcs::Se3TrackingInput se3_cpp_input(int k) {
+  adcs::Se3ScenarioParams sp;
+  adcs::Se3SpacecraftState t;
+  EXPECT_EQ(adcs::se3_target_initial_state(sp, t), adcs::Status::ok);
+  adcs::Se3SpacecraftState c = adcs::se3_chaser_initial_state(t, adcs::kSe3InitialPoses[0]);
+  c.omega_BN_B += adcs::Vec3(1e-3, -2e-3, 1e-3) * (1.0 + 0.1 * k);
+  c.v_B += adcs::Vec3(0.02, -0.01, 0.03) * (1.0 - 0.05 * k);
+  const adcs::Se3Spacecraft target(adcs::se3_target_params(sp));
+  adcs::Se3DesiredState d;
+  EXPECT_EQ(adcs::se3_desired_state(target, t, sp, d), adcs::Status::ok);
+  return adcs::Se3TrackingInput{c, d};
+}
+
+template <class CInput, class S>
+CInput se3_c_input(const adcs::Se3TrackingInputT<S>& in) {
+  CInput ci{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      ci.C_NB[i][j] = in.state.C_NB(i, j);
+      ci.C_ND[i][j] = in.desired.C_ND(i, j);
+    }
+    ci.R_N_m[i] = in.state.R_N(i);
+    ci.omega_BN_B[i] = in.state.omega_BN_B(i);
+    ci.v_B_m_s[i] = in.state.v_B(i);
+    ci.R_d_N_m[i] = in.desired.R_N(i);
+    ci.omega_DN_D[i] = in.desired.omega_DN_D(i);
+    ci.v_D_m_s[i] = in.desired.v_D(i);
+    ci.omega_dot_D[i] = in.desired.omega_dot_D(i);
+    ci.v_dot_D_m_s2[i] = in.desired.v_dot_D(i);
+  }
+  return ci;
+}
+
+template <class S, class CParams, class CState, class CInput, class COutput, class Init, class Step>
+void expect_se3_equals_cpp(Init init, Step step) {
+  const CParams cp = se3_c_params<CParams>();
+  CState cs;
+  ASSERT_EQ(init(&cp, &cs), ADCS_STATUS_OK);
+  // The C++ law from the same values: the double parameters, rounded once into S.
+  adcs::PrescribedTimeSe3T<S> cpp(se3_cpp_params().cast<S>());
+  ASSERT_EQ(cpp.status(), adcs::Status::ok);
+  long allocations = 0;
+  for (int k = 0; k < 20; ++k) {
+    const adcs::Se3TrackingInputT<S> in = se3_cpp_input(k).cast<S>();
+    const CInput ci = se3_c_input<CInput>(in);
+    COutput co{};
+    adcs::WrenchT<S> out;
+    adcs_status s = 0;
+    {
+      adcs::test::NoAllocScope scope;
+      s = step(&cs, &ci, &co);
+      allocations += scope.allocations();
+    }
+    ASSERT_EQ(s, static_cast<adcs_status>(cpp.step(in, out))) << k;
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(std::memcmp(&co.torque_B_Nm[i], &out.torque_B_Nm(i), sizeof(S)), 0) << k;
+      EXPECT_EQ(std::memcmp(&co.force_B_N[i], &out.force_B_N(i), sizeof(S)), 0) << k;
+    }
+  }
+  EXPECT_EQ(allocations, 0);
+}
+
+TEST(CInterface, Se3PtcEqualsTheCppComponentBitForBitWithoutHeap) {
+  expect_se3_equals_cpp<double, adcs_se3_ptc_params, adcs_se3_ptc_state, adcs_se3_ptc_input, adcs_se3_ptc_output>(
+      adcs_se3_ptc_init, adcs_se3_ptc_step);
+  expect_se3_equals_cpp<float, adcs_se3_ptcf_params, adcs_se3_ptcf_state, adcs_se3_ptcf_input, adcs_se3_ptcf_output>(
+      adcs_se3_ptcf_init, adcs_se3_ptcf_step);
+}
+
+TEST(CInterface, Se3PtcRefusalsAndFailureCommands) {
+  adcs_se3_ptc_state s;
+  adcs_se3_ptc_output out = {{7.0, 7.0, 7.0}, {7.0, 7.0, 7.0}};
+  const adcs_se3_ptc_input in = se3_c_input<adcs_se3_ptc_input>(se3_cpp_input(0));
+  adcs_se3_ptc_params p = se3_c_params<adcs_se3_ptc_params>();
+  EXPECT_EQ(adcs_se3_ptc_init(nullptr, &s), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(adcs_se3_ptc_init(&p, nullptr), ADCS_STATUS_INVALID_PARAMETER);
+  static adcs_se3_ptc_state never;
+  EXPECT_EQ(adcs_se3_ptc_step(&never, &in, &out), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(out.force_B_N[0], 7.0);
+  // Refused sets: a forgotten inertia (zeros: not SPD), a forgotten ζ (NaN: no default), an
+  // unknown failure policy, p outside (0, 1), a negative mass. Each step commands the zero wrench.
+  for (int which = 0; which < 5; ++which) {
+    p = se3_c_params<adcs_se3_ptc_params>();
+    if (which == 0) std::memset(p.J0_kgm2, 0, sizeof p.J0_kgm2);
+    if (which == 1) p.zeta[4] = kNaN;
+    if (which == 2) p.on_failure = 7;
+    if (which == 3) p.p = 1.0;
+    if (which == 4) p.m0_kg = -1.0;
+    EXPECT_EQ(adcs_se3_ptc_init(&p, &s), ADCS_STATUS_INVALID_PARAMETER) << which;
+    EXPECT_EQ(adcs_se3_ptc_step(&s, &in, &out), ADCS_STATUS_INVALID_PARAMETER) << which;
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(out.torque_B_Nm[i], 0.0) << which;
+      EXPECT_EQ(out.force_B_N[i], 0.0) << which;
+    }
+  }
+  // Bad input under each policy: the zero wrench, or the last good command; in float too.
+  for (adcs_failure_policy policy : {ADCS_FAILURE_SAFE_COMMAND, ADCS_FAILURE_HOLD_LAST}) {
+    adcs_se3_ptcf_params pf = se3_c_params<adcs_se3_ptcf_params>();
+    pf.on_failure = policy;
+    adcs_se3_ptcf_state sf;
+    ASSERT_EQ(adcs_se3_ptcf_init(&pf, &sf), ADCS_STATUS_OK);
+    adcs_se3_ptcf_input inf = se3_c_input<adcs_se3_ptcf_input>(se3_cpp_input(0).cast<float>());
+    adcs_se3_ptcf_output good{}, bad{};
+    ASSERT_EQ(adcs_se3_ptcf_step(&sf, &inf, &good), ADCS_STATUS_OK);
+    inf.v_dot_D_m_s2[1] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(adcs_se3_ptcf_step(&sf, &inf, &bad), ADCS_STATUS_NON_FINITE_INPUT);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(bad.torque_B_Nm[i], policy == ADCS_FAILURE_HOLD_LAST ? good.torque_B_Nm[i] : 0.0f);
+      EXPECT_EQ(bad.force_B_N[i], policy == ADCS_FAILURE_HOLD_LAST ? good.force_B_N[i] : 0.0f);
+    }
+  }
+}
+
 TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_mrp_pd4_state), 352u);
   EXPECT_EQ(sizeof(adcs_mrp_pd4f_state), 192u);
@@ -591,6 +752,10 @@ TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_hybrid43f_state), 1216u);
   EXPECT_EQ(alignof(adcs_hybrid43_state), 16u);
   EXPECT_EQ(alignof(adcs_hybrid43f_state), 16u);
+  EXPECT_EQ(sizeof(adcs_se3_ptc_state), 1216u);
+  EXPECT_EQ(sizeof(adcs_se3_ptcf_state), 588u);
+  EXPECT_EQ(alignof(adcs_se3_ptc_state), 16u);
+  EXPECT_EQ(alignof(adcs_se3_ptcf_state), 4u);
 }
 
 }  // namespace ADCS_UNITY_ID

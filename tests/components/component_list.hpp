@@ -392,6 +392,26 @@ struct ComponentFixture<SaturatedQuantizer<6>> {
 };
 
 template <>
+struct ComponentFixture<Saturation<6, float>> {
+  static constexpr const char* name = "Saturation6f";
+  using C = Saturation<6, float>;
+  using D = ComponentFixture<Saturation<6>>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in(4) = std::numeric_limits<float>::quiet_NaN(); }
+};
+
+template <>
+struct ComponentFixture<SaturatedQuantizer<6, float>> {
+  static constexpr const char* name = "SaturatedQuantizer6f";
+  using C = SaturatedQuantizer<6, float>;
+  using D = ComponentFixture<SaturatedQuantizer<6>>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) { return D::input(k).cast<float>(); }
+  static void poison(C::Input& in) { in(2) = std::numeric_limits<float>::quiet_NaN(); }
+};
+
+template <>
 struct ComponentFixture<VscmgSteering<4, 0>> {
   static constexpr const char* name = "VscmgSteering40";
   using C = VscmgSteering<4, 0>;
@@ -433,8 +453,8 @@ template <int N>
 int output_values(const EskfOutput<N>& o, double* d) { return put_values(o.x_hat, d); }
 inline int output_values(const SaturatedEsfOutput& o, double* d) { return put_values(o.x_hat, d); }
 inline int output_values(const DragFreeActuation& o, double* d) { return put_values(o.stacked(), d); }
-template <int L>
-int output_values(const Vec<L>& o, double* d) { return put_values(o, d); }
+template <int L, class S>
+int output_values(const Vec<L, S>& o, double* d) { return put_values(o, d); }
 
 //! The numbers of an output, by value (fixed capacity, count n).
 struct OutputValues {
@@ -462,7 +482,7 @@ using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural
                      SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
                      RwTorqueAllocator<4, float>, PpcNeuralT<float>, HybridAdaptive<4, 3, float>,
                      AdaptiveTrackingT<float>, EsoAdrcAttitudeT<float>, PrescribedTimeSe3T<float>,
-                     FtsmcSe3T<float>>;
+                     FtsmcSe3T<float>, Saturation<6, float>, SaturatedQuantizer<6, float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

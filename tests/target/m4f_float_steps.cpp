@@ -7,6 +7,7 @@
 // this FPU a single double operation is a ~60-cycle library call.
 #include <new>
 
+#include "adcs/actuator/quantizer.hpp"
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/adaptive_tracking.hpp"
@@ -28,6 +29,8 @@ template class EsoAdrcAttitudeT<float>;
 // Seed 003: both SE(3) laws, constructors included (an LDLT of J0 and two powf for S's l1, l2).
 template class PrescribedTimeSe3T<float>;
 template class FtsmcSe3T<float>;
+// Seed 003's actuation stage (sat -> Q), constructor included (powf/logf of the level table).
+template class SaturatedQuantizer<6, float>;
 // Seed 001: the run-time members only. Its constructor runs the design in double on purpose
 // (pole placement, Lyapunov solve: software double once at start-up); compiled to code here it
 // cost ~70 arm-none-eabi-g++ CPU-s. The whole class, constructor included, is compiled with
@@ -52,6 +55,7 @@ using AtcF = adcs::AdaptiveTrackingT<float>;
 using EsoF = adcs::EsoAdrcAttitudeT<float>;
 using PtcF = adcs::PrescribedTimeSe3T<float>;
 using FtsF = adcs::FtsmcSe3T<float>;
+using SatQF = adcs::SaturatedQuantizer<6, float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
 extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
@@ -81,3 +85,7 @@ extern "C" int adcs_m4f_ftsmc_se3_step(FtsF* c, const FtsF::Input* in, FtsF::Out
   return static_cast<int>(c->step(*in, *out));
 }
 extern "C" void adcs_m4f_ftsmc_se3_init(FtsF* c, const FtsF::Params* p) { ::new (static_cast<void*>(c)) FtsF(*p); }
+extern "C" int adcs_m4f_saturated_quantizer_step(SatQF* c, const SatQF::Input* in, SatQF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
+extern "C" void adcs_m4f_saturated_quantizer_init(SatQF* c, const SatQF::Params* p) { ::new (static_cast<void*>(c)) SatQF(*p); }

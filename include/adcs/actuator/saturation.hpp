@@ -12,12 +12,13 @@ namespace adcs {
 //! Clamps u to [−limit_k, limit_k] per element; a limit that is not > 0 (0, negative, NaN)
 //! means "no limit" for that element, +inf is no limit too. Returns how many elements were
 //! clipped (0 = none). A non-finite u_k is left as is: callers check finiteness first.
-template <int L>
-int saturate_each(Vec<L>& u, const Vec<L>& limit) noexcept {
+//! Scalar S (issue 19): deduced from u.
+template <int L, class S = double>
+int saturate_each(Vec<L, S>& u, const identity_t<Vec<L, S>>& limit) noexcept {
   int clipped = 0;
   for (int k = 0; k < L; ++k) {
-    const double lim = limit(k);
-    if (!(lim > 0.0)) continue;
+    const S lim = limit(k);
+    if (!(lim > S(0))) continue;
     if (u(k) > lim) {
       u(k) = lim;
       ++clipped;
@@ -29,9 +30,14 @@ int saturate_each(Vec<L>& u, const Vec<L>& limit) noexcept {
   return clipped;
 }
 
-template <int L>
+template <int L, class S = double>
 struct SaturationParams {
-  Vec<L> limit = Vec<L>::Constant(kUnset);  //!< [channel units] |u_k| ≤ limit_k; > 0, +inf: none; no default
+  Vec<L, S> limit = Vec<L, S>::Constant(unset_v<S>);  //!< [channel units] |u_k| ≤ limit_k; > 0, +inf: none; no default
+  //! The same limits in another scalar (beyond T's range: +Inf, i.e. no limit).
+  template <class T>
+  SaturationParams<L, T> cast() const noexcept {
+    return SaturationParams<L, T>{scalar_cast<T>(limit)};
+  }
 };
 
 struct SaturationDiagnostics {
@@ -39,20 +45,20 @@ struct SaturationDiagnostics {
 };
 
 //! saturate_each as a component (an actuator's magnitude limits in front of a plant): Input and
-//! Output are the L-channel command.
-template <int L>
+//! Output are the L-channel command, in the scalar S (issue 19).
+template <int L, class S = double>
 class Saturation {
  public:
-  using Params = SaturationParams<L>;
-  using Input = Vec<L>;
-  using Output = Vec<L>;
+  using Params = SaturationParams<L, S>;
+  using Input = Vec<L, S>;
+  using Output = Vec<L, S>;
   using Diagnostics = SaturationDiagnostics;
 
   explicit Saturation(const Params& p) noexcept
-      : p_(p), status_(!p.limit.hasNaN() && (p.limit.array() > 0.0).all() ? Status::ok : Status::invalid_parameter) {}
+      : p_(p), status_(!p.limit.hasNaN() && (p.limit.array() > S(0)).all() ? Status::ok : Status::invalid_parameter) {}
   //! ok, or invalid_parameter: a limit NaN (unset) or not > 0 (+inf is allowed: no limit).
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return 0.0; }  //!< memoryless (core/component.hpp)
+  S period_s() const noexcept { return S(0); }  //!< memoryless (core/component.hpp)
   void reset() noexcept {}
 
   //! u clamped per channel; saturated when a channel was clipped. non_finite_input or
@@ -63,7 +69,7 @@ class Saturation {
       return status_ != Status::ok ? status_ : Status::non_finite_input;
     }
     out = u;
-    const int clipped = saturate_each<L>(out, p_.limit);
+    const int clipped = saturate_each<L, S>(out, p_.limit);
     if (diag) diag->clipped = clipped;
     return clipped > 0 ? Status::saturated : Status::ok;
   }
@@ -74,5 +80,6 @@ class Saturation {
 };
 
 ADCS_ASSERT_COMPONENT(Saturation<6>);
+ADCS_ASSERT_COMPONENT(Saturation<6, float>);
 
 }  // namespace adcs

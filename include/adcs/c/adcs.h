@@ -24,8 +24,9 @@
  * Families: MRP PD with reaction-wheel momentum feedback (4 wheels; the attitude law of the
  * rigid-wheel scenarios, `adcs::MrpPd<4, S>`), the reaction-wheel torque allocation
  * (`adcs::RwTorqueAllocator<4, S>`), seed 002's prescribed-performance adaptive RBF law
- * (`adcs::PpcNeuralT<S>`) and seed 001's adaptive law for 4 CMGs + 3 wheels
- * (`adcs::HybridAdaptive<4, 3, S>`), each in double (suffix none) and single precision (suffix f,
+ * (`adcs::PpcNeuralT<S>`), seed 001's adaptive law for 4 CMGs + 3 wheels
+ * (`adcs::HybridAdaptive<4, 3, S>`) and seed 003's prescribed-time SE(3) law
+ * (`adcs::PrescribedTimeSe3T<S>`), each in double (suffix none) and single precision (suffix f,
  * for FPUs without double: Cortex-M4F). The other families follow as their float instantiations
  * land (docs/TARGET.md).
  */
@@ -382,6 +383,114 @@ adcs_status adcs_hybrid43f_step(adcs_hybrid43f_state* state, const adcs_hybrid43
  * double FPU's start-up: it runs a Schur-based solve, never called by a step. */
 adcs_status adcs_hybrid_design_gains(const double poles_re[3][2], const double poles_im[3][2],
                                      const double Q_L[6][6], double K[3][6], double P[6][6]);
+
+/* ---- Seed 003: prescribed-time backstepping on SE(3) with input-quantization compensation --------
+ * (adcs/control/prescribed_time_se3.hpp, BsPdTC, seed 003 eqs. (29)-(47)): the wrench u = [M; F]
+ * (body torque and force) that drives the chaser's pose to the desired pose, from the SE(3)
+ * error eta = log(g_d^-1 g) and its rate, with an adaptive estimate psi_hat of the squared
+ * disturbance bound. Runs at params.period_s (seed 003: 0.125 s). The command is the law's
+ * own; saturation and the actuator's quantizer stay with the caller (zeta >= the quantizer's
+ * error bound, adcs::quantization_compensation_gain). Channels are [rotation x3; translation x3].
+ * In float, note what the input costs: ECI positions of ~6.8e6 m carry 0.5 m and inertial
+ * velocities of ~7.7 km/s 4.9e-4 m/s, so the relative position is known to ~0.5 m per sample
+ * (docs/TARGET.md: the attitude holds in float, the position does not). */
+typedef struct adcs_se3_ptc_params {
+  double p;                     /* [-] power, 0 < p < 1 (Table 1: 0.5) */
+  double T_s;                   /* [s] prescribed time T, > 0 */
+  double K2[6];                 /* [1/s] >= 0 */
+  double Lambda[6];             /* [-] low-power gain, >= 0 */
+  double Upsilon[6];            /* [-] high-power gain, >= 0 */
+  double eps1;                  /* [rad | m] switch of S(z1), > 0 */
+  double K3[6];                 /* [1/s] >= 0 */
+  double Lambda2[6];            /* [-] >= 0 */
+  double Upsilon2[6];           /* [-] >= 0 */
+  double eps2;                  /* switch of S(z2), > 0 */
+  double zeta[6];               /* [N m | N] quantization compensation gain, >= the quantizer's bound */
+  double eps_q;                 /* tanh width of u2, > 0 */
+  double a;                     /* robust-term scale, > 0 */
+  double gamma;                 /* adaptation gain, >= 0 */
+  double sigma1;                /* [1/s] leakage, >= 0 */
+  double sigma2;                /* cubic leakage, >= 0 */
+  double psi_hat0;              /* psi_hat(0), >= 0 */
+  double period_s;              /* [s] control period, > 0 */
+  double J0_kgm2[3][3];         /* [kg m^2] the controller's model of the chaser's inertia, SPD */
+  double m0_kg;                 /* [kg] its mass, > 0 */
+  double mu_m3_s2;              /* [m^3/s^2] Earth's gravitational parameter (3.986e14), > 0 */
+  double J2;                    /* [-] second zonal harmonic (1.08263e-3; 0: point mass) */
+  double R_E_m;                 /* [m] Earth's equatorial radius (6378e3), > 0 */
+  adcs_failure_policy on_failure;
+} adcs_se3_ptc_params;
+typedef struct adcs_se3_ptc_input {
+  double C_NB[3][3];            /* [-] chaser attitude: active rotation body -> ECI */
+  double R_N_m[3];              /* [m] chaser position, ECI */
+  double omega_BN_B[3];         /* [rad/s] chaser body rate, body components */
+  double v_B_m_s[3];            /* [m/s] chaser inertial velocity, body components */
+  double C_ND[3][3];            /* [-] desired attitude: active rotation desired body -> ECI */
+  double R_d_N_m[3];            /* [m] desired position, ECI */
+  double omega_DN_D[3];         /* [rad/s] desired body rate, desired-body components */
+  double v_D_m_s[3];            /* [m/s] desired inertial velocity, desired-body components */
+  double omega_dot_D[3];        /* [rad/s^2] its rate */
+  double v_dot_D_m_s2[3];       /* [m/s^2] its rate */
+} adcs_se3_ptc_input;
+typedef struct adcs_se3_ptc_output {
+  double torque_B_Nm[3];        /* [N m] control torque M, body components */
+  double force_B_N[3];          /* [N] control force F, body components */
+} adcs_se3_ptc_output;
+#define ADCS_SE3_PTC_STATE_SIZE 1216
+#define ADCS_SE3_PTC_STATE_ALIGN 16
+ADCS_C_STATE(adcs_se3_ptc_state, ADCS_SE3_PTC_STATE_SIZE, ADCS_SE3_PTC_STATE_ALIGN);
+adcs_status adcs_se3_ptc_init(const adcs_se3_ptc_params* params, adcs_se3_ptc_state* state);
+adcs_status adcs_se3_ptc_step(adcs_se3_ptc_state* state, const adcs_se3_ptc_input* in, adcs_se3_ptc_output* out);
+
+/* The same law in single precision (every field float; the law computes in float). */
+typedef struct adcs_se3_ptcf_params {
+  float p;
+  float T_s;
+  float K2[6];
+  float Lambda[6];
+  float Upsilon[6];
+  float eps1;
+  float K3[6];
+  float Lambda2[6];
+  float Upsilon2[6];
+  float eps2;
+  float zeta[6];
+  float eps_q;
+  float a;
+  float gamma;
+  float sigma1;
+  float sigma2;
+  float psi_hat0;
+  float period_s;
+  float J0_kgm2[3][3];
+  float m0_kg;
+  float mu_m3_s2;
+  float J2;
+  float R_E_m;
+  adcs_failure_policy on_failure;
+} adcs_se3_ptcf_params;
+typedef struct adcs_se3_ptcf_input {
+  float C_NB[3][3];
+  float R_N_m[3];
+  float omega_BN_B[3];
+  float v_B_m_s[3];
+  float C_ND[3][3];
+  float R_d_N_m[3];
+  float omega_DN_D[3];
+  float v_D_m_s[3];
+  float omega_dot_D[3];
+  float v_dot_D_m_s2[3];
+} adcs_se3_ptcf_input;
+typedef struct adcs_se3_ptcf_output {
+  float torque_B_Nm[3];
+  float force_B_N[3];
+} adcs_se3_ptcf_output;
+#define ADCS_SE3_PTCF_STATE_SIZE 588
+#define ADCS_SE3_PTCF_STATE_ALIGN 4
+ADCS_C_STATE(adcs_se3_ptcf_state, ADCS_SE3_PTCF_STATE_SIZE, ADCS_SE3_PTCF_STATE_ALIGN);
+adcs_status adcs_se3_ptcf_init(const adcs_se3_ptcf_params* params, adcs_se3_ptcf_state* state);
+adcs_status adcs_se3_ptcf_step(adcs_se3_ptcf_state* state, const adcs_se3_ptcf_input* in,
+                               adcs_se3_ptcf_output* out);
 
 #ifdef __cplusplus
 }

@@ -31,8 +31,10 @@
 namespace adcs {
 
 //! ζ_i = margin · ϖ_i of each quantizer channel (spec §A.5: "ζ > ϖ"; Table 1 [A]: margin 1.05).
-inline Vec6 quantization_compensation_gain(const CompositeQuantizerParams<6>& q, double margin = 1.05) noexcept {
-  Vec6 zeta;
+template <class S>
+inline Vec<6, S> quantization_compensation_gain(const CompositeQuantizerParams<6, S>& q,
+                                               identity_t<S> margin = S(1.05)) noexcept {
+  Vec<6, S> zeta;
   for (int i = 0; i < 6; ++i) zeta(i) = margin * quantizer_error_bound(q.channel[static_cast<std::size_t>(i)]);
   return zeta;
 }
