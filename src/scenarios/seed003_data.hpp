@@ -165,4 +165,24 @@ inline Vec6 se3_actuator_limits(const Se3ScenarioParams& p) noexcept {
   return Status::ok;
 }
 
+//! The laws' input at one of the paper's initial poses (state = 0..3 of kSe3InitialPoses), the
+//! chaser's twist offset by (d_omega_B, d_v_B) from the target-attached one (so that every term of
+//! the laws is active), and the desired state from the target model. Out-of-range state or a
+//! rejected target: ok is false and `out` untouched.
+[[nodiscard]] inline bool se3_paper_tracking_input(const Se3ScenarioParams& p, int state, const Vec3& d_omega_B,
+                                                   const Vec3& d_v_B, Se3SpacecraftState& chaser,
+                                                   Se3DesiredState& desired) noexcept {
+  if (state < 0 || state >= static_cast<int>(kSe3InitialPoses.size())) return false;
+  Se3SpacecraftState t;
+  if (se3_target_initial_state(p, t) != Status::ok) return false;
+  Se3SpacecraftState c = se3_chaser_initial_state(t, kSe3InitialPoses[static_cast<std::size_t>(state)]);
+  c.omega_BN_B += d_omega_B;
+  c.v_B += d_v_B;
+  Se3DesiredState d;
+  if (se3_desired_state(Se3Spacecraft(se3_target_params(p)), t, p, d) != Status::ok) return false;
+  chaser = c;
+  desired = d;
+  return true;
+}
+
 }  // namespace adcs

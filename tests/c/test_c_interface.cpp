@@ -625,16 +625,10 @@ CParams se3_c_params() {
 
 // The paper's pair at state 1 with a relative twist that varies with k (every term active).
 adcs::Se3TrackingInput se3_cpp_input(int k) {
-  adcs::Se3ScenarioParams sp;
-  adcs::Se3SpacecraftState t;
-  EXPECT_EQ(adcs::se3_target_initial_state(sp, t), adcs::Status::ok);
-  adcs::Se3SpacecraftState c = adcs::se3_chaser_initial_state(t, adcs::kSe3InitialPoses[0]);
-  c.omega_BN_B += adcs::Vec3(1e-3, -2e-3, 1e-3) * (1.0 + 0.1 * k);
-  c.v_B += adcs::Vec3(0.02, -0.01, 0.03) * (1.0 - 0.05 * k);
-  const adcs::Se3Spacecraft target(adcs::se3_target_params(sp));
-  adcs::Se3DesiredState d;
-  EXPECT_EQ(adcs::se3_desired_state(target, t, sp, d), adcs::Status::ok);
-  return adcs::Se3TrackingInput{c, d};
+  adcs::Se3TrackingInput in;
+  EXPECT_TRUE(adcs::se3_paper_tracking_input(adcs::Se3ScenarioParams{}, 0, adcs::Vec3(1e-3, -2e-3, 1e-3) * (1.0 + 0.1 * k),
+                                             adcs::Vec3(0.02, -0.01, 0.03) * (1.0 - 0.05 * k), in.state, in.desired));
+  return in;
 }
 
 template <class CInput, class S>

@@ -97,17 +97,11 @@ TEST(Se3Float, ErrorKinematicsMatchDoubleOnRelativePoses) {
 // Seed 003's chaser/target pair at an initial state, the desired state from the target model, and
 // a perturbed relative twist (so every term of the laws is active).
 adcs::Se3TrackingInput paper_input(int state, RandomPose& r) {
-  adcs::Se3ScenarioParams sp;
-  adcs::Se3SpacecraftState t;
-  EXPECT_EQ(adcs::se3_target_initial_state(sp, t), Status::ok);
-  adcs::Se3SpacecraftState c =
-      adcs::se3_chaser_initial_state(t, adcs::kSe3InitialPoses[static_cast<std::size_t>(state)]);
-  c.omega_BN_B += r.vec(5e-3);
-  c.v_B += r.vec(0.2);
-  const adcs::Se3Spacecraft target(adcs::se3_target_params(sp));
-  adcs::Se3DesiredState d;
-  EXPECT_EQ(adcs::se3_desired_state(target, t, sp, d), Status::ok);
-  return adcs::Se3TrackingInput{c, d};
+  const adcs::Vec3 d_omega = r.vec(5e-3);  // drawn in this order (argument order is unspecified)
+  const adcs::Vec3 d_v = r.vec(0.2);
+  adcs::Se3TrackingInput in;
+  EXPECT_TRUE(adcs::se3_paper_tracking_input(adcs::Se3ScenarioParams{}, state, d_omega, d_v, in.state, in.desired));
+  return in;
 }
 
 adcs::PrescribedTimeSe3Params ptc_params_d() {
