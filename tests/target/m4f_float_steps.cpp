@@ -16,6 +16,8 @@
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/control/prescribed_time_se3.hpp"
+#include "adcs/math/sparse_rows.hpp"
+#include "adcs/math/ud.hpp"
 
 namespace adcs {
 template class MrpPd<4, float>;
@@ -56,6 +58,10 @@ using EsoF = adcs::EsoAdrcAttitudeT<float>;
 using PtcF = adcs::PrescribedTimeSe3T<float>;
 using FtsF = adcs::FtsmcSe3T<float>;
 using SatQF = adcs::SaturatedQuantizer<6, float>;
+// Seed 004's U-D kernels (math/ud.hpp, math/sparse_rows.hpp) at the attitude block's size (18
+// states, 12 noise columns): the first part of seed 004 in float; its filters are still double.
+using UdF = adcs::UdFactors<18, float>;
+using SparseF = adcs::SparseRows<18, 18, float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
 extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
@@ -89,3 +95,19 @@ extern "C" int adcs_m4f_saturated_quantizer_step(SatQF* c, const SatQF::Input* i
   return static_cast<int>(c->step(*in, *out));
 }
 extern "C" void adcs_m4f_saturated_quantizer_init(SatQF* c, const SatQF::Params* p) { ::new (static_cast<void*>(c)) SatQF(*p); }
+extern "C" int adcs_m4f_ud_factorize(const adcs::Mat<18, 18, float>* P, UdF* out) {
+  return adcs::ud_factorize(*P, *out) ? 1 : 0;
+}
+extern "C" void adcs_m4f_mwgs_ud(adcs::Mat<18, 30, float>* W, const Eigen::Matrix<float, 1, 30>* w, UdF* out) {
+  adcs::mwgs_ud(*W, *w, *out);
+}
+extern "C" void adcs_m4f_agee_turner_update(UdF* f, float c, adcs::Vec<18, float>* a) {
+  adcs::agee_turner_update(*f, c, *a);
+}
+extern "C" float adcs_m4f_bierman_update(UdF* f, const adcs::Vec<18, float>* fvec, float r, int first,
+                                         adcs::Vec<18, float>* k) {
+  return adcs::bierman_update(*f, *fvec, r, first, *k);
+}
+extern "C" void adcs_m4f_sparse_propagate(const SparseF* A, const UdF* f, adcs::Mat<18, 18, float>* out) {
+  *out = A->mul_by_transpose(adcs::Mat<18, 18, float>(f->U.transpose()));
+}

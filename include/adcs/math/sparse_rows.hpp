@@ -3,7 +3,7 @@
 // Y Xᵀ for an N-column Y: (Y Xᵀ)(:, i) = Σ_j X(i, j) Y(:, j), each output column accumulated
 // in registers from contiguous input columns (column-major) and stored once. Seed 004's
 // filters form A P Aᵀ, A U and P Cᵀ this way (the drag-free A_d has 162 of 729 nonzeros, C_d 9
-// of 243).
+// of 243). S is the scalar (issue 19; double by default).
 #include <array>
 #include <cstdint>
 
@@ -11,19 +11,19 @@
 
 namespace adcs {
 
-template <int R, int N>
+template <int R, int N, class S = double>
 struct SparseRows {
   std::array<std::uint16_t, R * N> col{};
-  std::array<double, R * N> val{};
+  std::array<S, R * N> val{};
   std::array<int, R + 1> start{};  //!< row i's entries are [start[i], start[i+1])
   int count = 0;
 
-  void assign(const Mat<R, N>& X) noexcept {
+  void assign(const Mat<R, N, S>& X) noexcept {
     count = 0;
     for (int i = 0; i < R; ++i) {
       start[i] = count;
       for (int j = 0; j < N; ++j)
-        if (X(i, j) != 0.0) {
+        if (X(i, j) != S(0)) {
           col[count] = static_cast<std::uint16_t>(j);
           val[count] = X(i, j);
           ++count;
@@ -34,10 +34,10 @@ struct SparseRows {
 
   //! Y Xᵀ.
   template <int NR>
-  Mat<NR, R> mul_by_transpose(const Mat<NR, N>& Y) const noexcept {
-    Mat<NR, R> out;
+  Mat<NR, R, S> mul_by_transpose(const Mat<NR, N, S>& Y) const noexcept {
+    Mat<NR, R, S> out;
     for (int i = 0; i < R; ++i) {
-      Vec<NR> acc = Vec<NR>::Zero();
+      Vec<NR, S> acc = Vec<NR, S>::Zero();
       for (int k = start[i]; k < start[i + 1]; ++k) acc += val[k] * Y.col(col[k]);
       out.col(i) = acc;
     }
@@ -45,8 +45,8 @@ struct SparseRows {
   }
 
   //! X(i, :) v.
-  double row_dot(int i, const Vec<N>& v) const noexcept {
-    double s = 0.0;
+  S row_dot(int i, const Vec<N, S>& v) const noexcept {
+    S s = S(0);
     for (int k = start[i]; k < start[i + 1]; ++k) s += val[k] * v(col[k]);
     return s;
   }

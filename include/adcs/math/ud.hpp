@@ -10,16 +10,20 @@
 //   bierman_update      one scalar measurement       Bierman's update, O(N²), gain out
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "adcs/core/types.hpp"
 
 namespace adcs {
 
+// Every kernel takes the scalar S (issue 19; double by default, float for a single-precision FPU):
+// the operations are the same, and D >= 0 holds whatever the rounding in either precision.
+
 //! U-D factors of an N x N covariance.
-template <int N>
+template <int N, class S = double>
 struct UdFactors {
-  Mat<N, N> U;  //!< unit upper triangular
-  Vec<N> D;     //!< diagonal, >= 0
+  Mat<N, N, S> U;  //!< unit upper triangular
+  Vec<N, S> D;     //!< diagonal, >= 0
   //! P = 0 (U = I, D = 0). Not the default constructor: a step's candidate factors are written
   //! whole before use, and initialising them cost ~3% of the drag-free step (memset).
   static UdFactors zero() noexcept {
@@ -31,12 +35,12 @@ struct UdFactors {
 };
 
 //! P = U D Uᵀ (formed; N³/6 multiply-adds: not for a step path).
-template <int N>
-Mat<N, N> ud_covariance(const UdFactors<N>& f) noexcept {
-  Mat<N, N> P;
+template <int N, class S>
+Mat<N, N, S> ud_covariance(const UdFactors<N, S>& f) noexcept {
+  Mat<N, N, S> P;
   for (int j = 0; j < N; ++j)
     for (int i = 0; i <= j; ++i) {
-      double s = 0.0;
+      S s = S(0);
       for (int k = j; k < N; ++k) s += f.U(i, k) * f.D(k) * f.U(j, k);
       P(i, j) = s;
       P(j, i) = s;
@@ -45,9 +49,9 @@ Mat<N, N> ud_covariance(const UdFactors<N>& f) noexcept {
 }
 
 //! P_ij = Σ_{k ≥ max(i, j)} U_ik D_k U_jk.
-template <int N>
-double ud_covariance_entry(const UdFactors<N>& f, int i, int j) noexcept {
-  double s = 0.0;
+template <int N, class S>
+S ud_covariance_entry(const UdFactors<N, S>& f, int i, int j) noexcept {
+  S s = S(0);
   for (int k = i > j ? i : j; k < N; ++k) s += f.U(i, k) * f.D(k) * f.U(j, k);
   return s;
 }
@@ -57,24 +61,25 @@ double ud_covariance_entry(const UdFactors<N>& f, int i, int j) noexcept {
 //! semidefinite P (a state with zero variance, as the fusion of seed 004 eq. (41) leaves) is
 //! factored exactly. Returns false, out untouched, when P is not finite or a pivot is negative
 //! beyond that tolerance (P not PSD: there is no U-D factor to give).
-template <int N>
-bool ud_factorize(const Mat<N, N>& P, UdFactors<N>& out) noexcept {
+template <int N, class S>
+bool ud_factorize(const Mat<N, N, S>& P, UdFactors<N, S>& out) noexcept {
   if (!all_finite(P)) return false;
-  constexpr double kTol = 64.0 * N * 2.220446049250313e-16;
-  UdFactors<N> f = UdFactors<N>::zero();
+  // 64 N ε of the scalar (double: 64 N · 2.22e-16, as before issue 19; float: 64 N · 1.19e-7).
+  constexpr S kTol = S(64) * S(N) * std::numeric_limits<S>::epsilon();
+  UdFactors<N, S> f = UdFactors<N, S>::zero();
   for (int j = N - 1; j >= 0; --j) {
-    double d = P(j, j);
+    S d = P(j, j);
     for (int k = j + 1; k < N; ++k) d -= f.U(j, k) * f.U(j, k) * f.D(k);
-    const double tol = kTol * std::abs(P(j, j));
-    if (d < -tol || !(P(j, j) >= 0.0)) return false;
+    const S tol = kTol * std::abs(P(j, j));
+    if (d < -tol || !(P(j, j) >= S(0))) return false;
     if (d <= tol) {  // zero variance left for state j: nothing to regress on it
-      f.D(j) = 0.0;
-      for (int i = 0; i < j; ++i) f.U(i, j) = 0.0;
+      f.D(j) = S(0);
+      for (int i = 0; i < j; ++i) f.U(i, j) = S(0);
       continue;
     }
     f.D(j) = d;
     for (int i = 0; i < j; ++i) {
-      double s = P(i, j);
+      S s = P(i, j);
       for (int k = j + 1; k < N; ++k) s -= f.U(i, k) * f.D(k) * f.U(j, k);
       f.U(i, j) = s / d;
     }
@@ -99,25 +104,25 @@ bool ud_factorize(const Mat<N, N>& P, UdFactors<N>& out) noexcept {
 //! Only the first n rows take part: columns 0..n−1 of out.U and D(0..n−1) are written, the
 //! others are left to the caller (EskfUd's time update writes them itself: setting all of an
 //! 18 x 18 U to the identity first was a 2.6 kB memset per step).
-template <int N, int M>
-void mwgs_ud(Mat<N, M>& W, const Eigen::Matrix<double, 1, M>& w, std::array<int, N> first, int n, int m,
-             UdFactors<N>& out) noexcept {
+template <int N, int M, class S>
+void mwgs_ud(Mat<N, M, S>& W, const Eigen::Matrix<S, 1, M>& w, std::array<int, N> first, int n, int m,
+             UdFactors<N, S>& out) noexcept {
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i < N; ++i) out.U(i, j) = i == j ? 1.0 : 0.0;
-  double c[M];
-  double u[N];
+    for (int i = 0; i < N; ++i) out.U(i, j) = i == j ? S(1) : S(0);
+  S c[M];
+  S u[N];
   for (int j = n - 1; j >= 0; --j) {
     const int a = first[j];
-    double d = 0.0;
+    S d = S(0);
     for (int k = a; k < m; ++k) {
       c[k] = W(j, k) * w(k);  // w ∘ W_j
       d += W(j, k) * c[k];
     }
     out.D(j) = d;
-    if (!(d > 0.0) || j == 0) continue;  // W_j is zero in the weighted norm: nothing to remove
-    for (int i = 0; i < j; ++i) u[i] = 0.0;
+    if (!(d > S(0)) || j == 0) continue;  // W_j is zero in the weighted norm: nothing to remove
+    for (int i = 0; i < j; ++i) u[i] = S(0);
     for (int k = a; k < m; ++k) {  // u = W_{0:j} c / d, column by column (contiguous)
-      const double* col = W.col(k).data();
+      const S* col = W.col(k).data();
       for (int i = 0; i < j; ++i) u[i] += col[i] * c[k];
     }
     for (int i = 0; i < j; ++i) {
@@ -126,17 +131,17 @@ void mwgs_ud(Mat<N, M>& W, const Eigen::Matrix<double, 1, M>& w, std::array<int,
       first[i] = first[i] < a ? first[i] : a;
     }
     for (int k = a; k < m; ++k) {  // W_{0:j} −= u W_j
-      double* col = W.col(k).data();
-      const double wjk = col[j];
+      S* col = W.col(k).data();
+      const S wjk = col[j];
       for (int i = 0; i < j; ++i) col[i] -= u[i] * wjk;
     }
   }
 }
 //! Dense W: every column of every row in use.
-template <int N, int M>
-void mwgs_ud(Mat<N, M>& W, const Eigen::Matrix<double, 1, M>& w, UdFactors<N>& out) noexcept {
+template <int N, int M, class S>
+void mwgs_ud(Mat<N, M, S>& W, const Eigen::Matrix<S, 1, M>& w, UdFactors<N, S>& out) noexcept {
   std::array<int, N> first{};
-  mwgs_ud<N, M>(W, w, first, N, M, out);
+  mwgs_ud<N, M, S>(W, w, first, N, M, out);
 }
 
 //! Agee–Turner rank-one modification (Bierman 1977 §V.4; Thornton 1976): (U, D) ← the U-D factors
@@ -146,24 +151,24 @@ void mwgs_ud(Mat<N, M>& W, const Eigen::Matrix<double, 1, M>& w, UdFactors<N>& o
 //! With c ≥ 0 every d̄_j ≥ d_j ≥ 0 and c_j ≥ 0 (no subtraction of variances: the stable case).
 //! Columns where a_j = 0 change nothing and are skipped, so a vector with few nonzeros (a
 //! selector, the rows above a state) costs only those columns.
-template <int N>
-void agee_turner_update(UdFactors<N>& f, double c, Vec<N>& a) noexcept {
-  double* av = a.data();
-  for (int j = N - 1; j > 0 && c > 0.0; --j) {
-    const double v = av[j];
-    if (v == 0.0) continue;  // nothing of this column: d_j and c unchanged
-    const double d_new = f.D(j) + c * v * v;
-    const double b = c / d_new;
+template <int N, class S>
+void agee_turner_update(UdFactors<N, S>& f, identity_t<S> c, Vec<N, S>& a) noexcept {
+  S* av = a.data();
+  for (int j = N - 1; j > 0 && c > S(0); --j) {
+    const S v = av[j];
+    if (v == S(0)) continue;  // nothing of this column: d_j and c unchanged
+    const S d_new = f.D(j) + c * v * v;
+    const S b = c / d_new;
     c = f.D(j) * b;
     f.D(j) = d_new;
-    const double bv = b * v;
-    double* u = f.U.col(j).data();
+    const S bv = b * v;
+    S* u = f.U.col(j).data();
     for (int i = 0; i < j; ++i) {
       av[i] -= v * u[i];
       u[i] += bv * av[i];
     }
   }
-  if (c > 0.0) f.D(0) += c * av[0] * av[0];
+  if (c > S(0)) f.D(0) += c * av[0] * av[0];
 }
 
 //! Bierman's scalar measurement update (Bierman 1977 §V.3) of (U, D) for z = h x + v, var(v) = r
@@ -171,18 +176,18 @@ void agee_turner_update(UdFactors<N>& f, double c, Vec<N>& a) noexcept {
 //! is given; entries before `first` must be zero (U upper triangular: first = the lowest index
 //! where h is nonzero), which skips the columns j < first, where the update changes nothing.
 //! α grows from r > 0, so every D_j stays ≥ 0. Returns α = h P hᵀ + r, the innovation variance.
-template <int N>
-double bierman_update(UdFactors<N>& f, const Vec<N>& fvec, double r, int first, Vec<N>& k) noexcept {
-  double b[N] = {};
-  double alpha = r;
+template <int N, class S>
+S bierman_update(UdFactors<N, S>& f, const Vec<N, S>& fvec, identity_t<S> r, int first, Vec<N, S>& k) noexcept {
+  S b[N] = {};
+  S alpha = r;
   for (int j = first; j < N; ++j) {
-    const double v = f.D(j) * fvec(j);
-    const double alpha_next = alpha + fvec(j) * v;
-    const double p = -fvec(j) / alpha;
+    const S v = f.D(j) * fvec(j);
+    const S alpha_next = alpha + fvec(j) * v;
+    const S p = -fvec(j) / alpha;
     f.D(j) *= alpha / alpha_next;
-    double* u = f.U.col(j).data();
+    S* u = f.U.col(j).data();
     for (int i = 0; i < j; ++i) {
-      const double uij = u[i];
+      const S uij = u[i];
       u[i] = uij + b[i] * p;
       b[i] += uij * v;
     }
