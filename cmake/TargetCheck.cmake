@@ -221,7 +221,8 @@ if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
                    adcs_m4f_eso_adrc_attitude_init adcs_m4f_prescribed_time_se3_step adcs_m4f_prescribed_time_se3_init
                    adcs_m4f_ftsmc_se3_step adcs_m4f_ftsmc_se3_init adcs_m4f_saturated_quantizer_step
                    adcs_m4f_saturated_quantizer_init adcs_m4f_ud_factorize adcs_m4f_mwgs_ud
-                   adcs_m4f_agee_turner_update adcs_m4f_bierman_update adcs_m4f_sparse_propagate)
+                   adcs_m4f_agee_turner_update adcs_m4f_bierman_update adcs_m4f_sparse_propagate
+                   adcs_m4f_drag_free_eskf_step)
   add_test(NAME target_m4f_c_api_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
                    ${_m4f_c_lib} adcs_mrp_pd4f_init adcs_mrp_pd4f_step adcs_rw_alloc4f_init adcs_rw_alloc4f_step

@@ -412,6 +412,25 @@ struct ComponentFixture<SaturatedQuantizer<6, float>> {
 };
 
 template <>
+struct ComponentFixture<DragFreeEskfT<float>> {
+  static constexpr const char* name = "DragFreeEskff";
+  using C = DragFreeEskfT<float>;
+  using D = ComponentFixture<DragFreeEskf>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) {
+    const DragFreeEskf::Input d = D::input(k);
+    C::Input in;
+    in.u = d.u.cast<float>();
+    in.delta_f_nominal = d.delta_f_nominal.cast<float>();
+    in.y = d.y.cast<float>();
+    return in;
+  }
+  static void poison(C::Input& in) { in.u(0) = kNaNf; }
+};
+template <>
+inline constexpr bool kRejectionKeepsState<DragFreeEskfT<float>> = false;
+
+template <>
 struct ComponentFixture<VscmgSteering<4, 0>> {
   static constexpr const char* name = "VscmgSteering40";
   using C = VscmgSteering<4, 0>;
@@ -449,8 +468,8 @@ template <int N, class S>
 int output_values(const WheelTorques<N, S>& o, double* d) { return put_values(o.u_s_Nm, d); }
 template <int N>
 int output_values(const PidOutput<N>& o, double* d) { return put_values(o.u, d); }
-template <int N>
-int output_values(const EskfOutput<N>& o, double* d) { return put_values(o.x_hat, d); }
+template <int N, class S>
+int output_values(const EskfOutput<N, S>& o, double* d) { return put_values(o.x_hat, d); }
 inline int output_values(const SaturatedEsfOutput& o, double* d) { return put_values(o.x_hat, d); }
 inline int output_values(const DragFreeActuation& o, double* d) { return put_values(o.stacked(), d); }
 template <int L, class S>
@@ -482,7 +501,7 @@ using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural
                      SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
                      RwTorqueAllocator<4, float>, PpcNeuralT<float>, HybridAdaptive<4, 3, float>,
                      AdaptiveTrackingT<float>, EsoAdrcAttitudeT<float>, PrescribedTimeSe3T<float>,
-                     FtsmcSe3T<float>, Saturation<6, float>, SaturatedQuantizer<6, float>>;
+                     FtsmcSe3T<float>, Saturation<6, float>, SaturatedQuantizer<6, float>, DragFreeEskfT<float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

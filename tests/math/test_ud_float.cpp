@@ -11,7 +11,7 @@
 #include "adcs/math/sparse_rows.hpp"
 #include "adcs/math/ud.hpp"
 
-namespace {
+namespace ADCS_UNITY_ID {
 
 using adcs::Mat;
 using adcs::UdFactors;
@@ -38,7 +38,8 @@ double relative_difference(const Mat<N, N, float>& a, const Mat<N, N>& b) {
   return (a.template cast<double>() - b).norm() / b.norm();
 }
 
-}  // namespace
+}  // namespace ADCS_UNITY_ID
+using namespace ADCS_UNITY_ID;  // as an anonymous namespace would (CMakeLists.txt, adcs_unity)
 
 // Factorisation: the float tolerance (64 N ε of float) takes a zero-variance row as exactly zero
 // and refuses an indefinite or non-finite P, output untouched, as in double. Full-rank P only: a

@@ -1,4 +1,5 @@
-// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-003 (and the
+// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-003, seed
+// 004's U-D Algorithm 1 (and the
 // ESO-based ADRC flown on seed 002's vehicle) compiled for a
 // single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard) with
 // -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py then walks the call
@@ -16,6 +17,7 @@
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/control/prescribed_time_se3.hpp"
+#include "adcs/estimate/drag_free_eskf.hpp"
 #include "adcs/math/sparse_rows.hpp"
 #include "adcs/math/ud.hpp"
 
@@ -62,6 +64,9 @@ using SatQF = adcs::SaturatedQuantizer<6, float>;
 // states, 12 noise columns): the first part of seed 004 in float; its filters are still double.
 using UdF = adcs::UdFactors<18, float>;
 using SparseF = adcs::SparseRows<18, 18, float>;
+// Seed 004's Algorithm 1 in U-D form, float (DragFreeEskfT<float>): its step here, the whole
+// class (constructor included) in the clang whole-class check.
+using EskfF = adcs::DragFreeEskfT<float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
 extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
@@ -111,3 +116,17 @@ extern "C" float adcs_m4f_bierman_update(UdF* f, const adcs::Vec<18, float>* fve
 extern "C" void adcs_m4f_sparse_propagate(const SparseF* A, const UdF* f, adcs::Mat<18, 18, float>* out) {
   *out = A->mul_by_transpose(adcs::Mat<18, 18, float>(f->U.transpose()));
 }
+extern "C" int adcs_m4f_drag_free_eskf_step(EskfF* f, const EskfF::Input* in, EskfF::Output* out) {
+  return static_cast<int>(f->step(*in, *out));
+}
+// Its constructor (the parameter check: LDLT/LLT of S, R, P_0 in float, the coupling check on the
+// 27-state matrices, the U-D factorisations) is compiled to code only by the whole-class check
+// below: here it cost 46 arm-none-eabi-g++ CPU-s (the step 36), measured alone.
+#ifdef ADCS_M4F_WHOLE_CLASS
+template class adcs::EskfUd<18, adcs::kDragFreeInputs, adcs::kDragFreeInputs, 6, adcs::kDragFreeAttitudeNoiseColumns, float>;
+template class adcs::EskfUd<9, adcs::kDragFreeInputs, adcs::kDragFreeInputs, 3, adcs::kDragFreeTranslationNoiseColumns, float>;
+template class adcs::PartitionedFilter<
+    adcs::EskfUd<18, adcs::kDragFreeInputs, adcs::kDragFreeInputs, 6, adcs::kDragFreeAttitudeNoiseColumns, float>,
+    adcs::EskfUd<9, adcs::kDragFreeInputs, adcs::kDragFreeInputs, 3, adcs::kDragFreeTranslationNoiseColumns, float>>;
+extern "C" void adcs_m4f_drag_free_eskf_init(EskfF* f, const EskfF::Params* p) { ::new (static_cast<void*>(f)) EskfF(*p); }
+#endif

@@ -32,59 +32,82 @@ namespace adcs {
 //! The model (A_d, B_d, B_e, C_d) and R have no default: NaN until set, so a forgotten matrix is
 //! refused (status() == invalid_parameter). q = 0 and S = 0 are real choices (no increment bound,
 //! no input noise: spec §B.8's T_Dtm channel has q = 0); X̂_0, P_0 and θ are spec §B.4's.
-template <int N, int NU, int NL, int NY>
+//! Sc is the scalar (issue 19: double by default; the U-D form also runs in float, EskfUd).
+template <int N, int NU, int NL, int NY, class Sc = double>
 struct EskfParams {
-  Mat<N, N> A_d = Mat<N, N>::Constant(kUnset);    //!< discrete state matrix (ZOH), no default
-  Mat<N, NU> B_d = Mat<N, NU>::Constant(kUnset);  //!< discrete input matrix (ZOH), no default
-  Mat<N, NL> B_e = Mat<N, NL>::Constant(kUnset);  //!< disturbance-increment selector, no default
-  Mat<NY, N> C_d = Mat<NY, N>::Constant(kUnset);  //!< measurement matrix, no default
-  Vec<NL> q = Vec<NL>::Zero();            //!< bounds on E[G_i²] (spec §B.8: (max|ḟ_i| h)²), >= 0
-  Mat<NU, NU> S = Mat<NU, NU>::Zero();    //!< input-noise covariance S_k (symmetric PSD)
-  Mat<NY, NY> R = Mat<NY, NY>::Constant(kUnset);  //!< sensor-noise covariance R_k (SPD), no default
-  Vec<N> x0 = Vec<N>::Zero();             //!< X̂_0 (spec §B.4: 0)
-  Mat<N, N> P0 = 0.01 * Mat<N, N>::Identity();  //!< P_0 (spec §B.4: 0.01 I), symmetric PSD, tr > 0
+  Mat<N, N, Sc> A_d = Mat<N, N, Sc>::Constant(unset_v<Sc>);    //!< discrete state matrix (ZOH), no default
+  Mat<N, NU, Sc> B_d = Mat<N, NU, Sc>::Constant(unset_v<Sc>);  //!< discrete input matrix (ZOH), no default
+  Mat<N, NL, Sc> B_e = Mat<N, NL, Sc>::Constant(unset_v<Sc>);  //!< disturbance-increment selector, no default
+  Mat<NY, N, Sc> C_d = Mat<NY, N, Sc>::Constant(unset_v<Sc>);  //!< measurement matrix, no default
+  Vec<NL, Sc> q = Vec<NL, Sc>::Zero();          //!< bounds on E[G_i²] (spec §B.8: (max|ḟ_i| h)²), >= 0
+  Mat<NU, NU, Sc> S = Mat<NU, NU, Sc>::Zero();  //!< input-noise covariance S_k (symmetric PSD)
+  Mat<NY, NY, Sc> R = Mat<NY, NY, Sc>::Constant(unset_v<Sc>);  //!< sensor-noise covariance R_k (SPD), no default
+  Vec<N, Sc> x0 = Vec<N, Sc>::Zero();           //!< X̂_0 (spec §B.4: 0)
+  Mat<N, N, Sc> P0 = Sc(0.01) * Mat<N, N, Sc>::Identity();  //!< P_0 (spec §B.4: 0.01 I), symmetric PSD, tr > 0
   ThetaPolicy theta_policy = ThetaPolicy::trace_optimal;  //!< spec §B.4 [D]
-  double period_s = kUnset;               //!< [s] h, the period A_d and B_d were discretised at, no default
+  Sc period_s = unset_v<Sc>;  //!< [s] h, the period A_d and B_d were discretised at, no default
+
+  //! The same parameters in the scalar T, each value rounded once (narrow_scalar: beyond T's
+  //! range → ±Inf, refused by the filter's check).
+  template <class T>
+  EskfParams<N, NU, NL, NY, T> cast() const noexcept {
+    EskfParams<N, NU, NL, NY, T> out;
+    const auto c = [](const auto& m) { return m.unaryExpr([](Sc v) { return narrow_scalar<T>(v); }); };
+    out.A_d = c(A_d);
+    out.B_d = c(B_d);
+    out.B_e = c(B_e);
+    out.C_d = c(C_d);
+    out.q = c(q);
+    out.S = c(S);
+    out.R = c(R);
+    out.x0 = c(x0);
+    out.P0 = c(P0);
+    out.theta_policy = theta_policy;
+    out.period_s = narrow_scalar<T>(period_s);
+    return out;
+  }
 };
 
 //! One filter sample: the input applied over the last period, the nominal disturbance increment
 //! and the measurement taken now.
-template <int NU, int NL, int NY>
+template <int NU, int NL, int NY, class S = double>
 struct EskfInput {
-  Vec<NU> u = Vec<NU>::Zero();                //!< u_{k−1}, applied over the last period
-  Vec<NL> delta_f_nominal = Vec<NL>::Zero();  //!< Δf̄ (0: the nominal model f̄ = 0 of spec §B.8)
-  Vec<NY> y = Vec<NY>::Zero();                //!< Y_k
+  Vec<NU, S> u = Vec<NU, S>::Zero();                //!< u_{k−1}, applied over the last period
+  Vec<NL, S> delta_f_nominal = Vec<NL, S>::Zero();  //!< Δf̄ (0: the nominal model f̄ = 0 of spec §B.8)
+  Vec<NY, S> y = Vec<NY, S>::Zero();                //!< Y_k
 };
 
-template <int N>
+template <int N, class S = double>
 struct EskfOutput {
-  Vec<N> x_hat = Vec<N>::Zero();  //!< X̂_k (the prediction alone when the update was rejected)
+  Vec<N, S> x_hat = Vec<N, S>::Zero();  //!< X̂_k (the prediction alone when the update was rejected)
 };
 
-struct EskfDiagnostics {
+template <class S = double>
+struct EskfDiagnosticsT {
   Status predict = Status::ok;  //!< the time update's status
   Status update = Status::ok;   //!< the measurement update's (the time update's when it failed)
-  double theta = 0.0;           //!< [-] θ_k of the time update
+  S theta = S(0);               //!< [-] θ_k of the time update
 };
+using EskfDiagnostics = EskfDiagnosticsT<double>;
 
 //! The parameter check both forms of Algorithm 1 (Eskf, EskfUd) make: A_d, B_d, B_e, C_d and
 //! X̂_0 finite; q finite >= 0; S symmetric PSD; R symmetric positive definite; P_0 symmetric PSD
 //! with tr P_0 > 0 (θ* divides by it); period_s finite > 0.
-template <int N, int NU, int NL, int NY>
-bool valid(const EskfParams<N, NU, NL, NY>& p) noexcept {
+template <int N, int NU, int NL, int NY, class S>
+bool valid(const EskfParams<N, NU, NL, NY, S>& p) noexcept {
   return all_finite(p.A_d) && all_finite(p.B_d) && all_finite(p.B_e) && all_finite(p.C_d) && finite_nonnegative(p.q) &&
-         symmetric_positive_semidefinite<NU>(p.S) && symmetric_positive_definite<NY>(p.R) && all_finite(p.x0) &&
-         symmetric_positive_semidefinite<N>(p.P0) && p.P0.trace() > 0.0 && finite_positive(p.period_s);
+         symmetric_positive_semidefinite<NU, S>(p.S) && symmetric_positive_definite<NY, S>(p.R) && all_finite(p.x0) &&
+         symmetric_positive_semidefinite<N, S>(p.P0) && p.P0.trace() > S(0) && finite_positive(p.period_s);
 }
 
 namespace detail {
 //! X̂⁻ = A_d X̂ + B_d u + B_e Ĝ with Ĝ_i = clip(Δf̄_i, ±√q_i), A_d from its nonzeros.   seed 004 eq. (9)
-template <int N, int NU, int NL>
-Vec<N> extended_state_prediction(const SparseRows<N, N>& A_nz, const Mat<N, NU>& B_d, const Mat<N, NL>& B_e,
-                                 const Vec<NL>& sqrt_q, const Vec<N>& x, const Vec<NU>& u,
-                                 const Vec<NL>& delta_f_nominal) noexcept {
-  const Vec<NL> G_hat = delta_f_nominal.cwiseMax(-sqrt_q).cwiseMin(sqrt_q);  // seed 004 eq. (9)
-  Vec<N> out = A_nz.mul_by_transpose(Mat<1, N>(x.transpose())).transpose();  // A_d x (sparse)
+template <int N, int NU, int NL, class S>
+Vec<N, S> extended_state_prediction(const SparseRows<N, N, S>& A_nz, const Mat<N, NU, S>& B_d, const Mat<N, NL, S>& B_e,
+                                    const Vec<NL, S>& sqrt_q, const Vec<N, S>& x, const Vec<NU, S>& u,
+                                    const Vec<NL, S>& delta_f_nominal) noexcept {
+  const Vec<NL, S> G_hat = delta_f_nominal.cwiseMax(-sqrt_q).cwiseMin(sqrt_q);  // seed 004 eq. (9)
+  Vec<N, S> out = A_nz.mul_by_transpose(Mat<1, N, S>(x.transpose())).transpose();  // A_d x (sparse)
   out.noalias() += B_d * u;
   out.noalias() += B_e * G_hat;
   return out;
@@ -94,8 +117,8 @@ Vec<N> extended_state_prediction(const SparseRows<N, N>& A_nz, const Mat<N, NU>&
 //! update; a rejected measurement leaves the prediction in place (the filter coasts, as a flight
 //! estimator does when a sensor sample is bad), a rejected time update leaves everything. The
 //! output is always the filter's current estimate, which stays finite.
-template <class Filter, class In, int N>
-Status estimator_sample(Filter& f, const In& in, EskfOutput<N>& out, EskfDiagnostics* diag) noexcept {
+template <class Filter, class In, int N, class S>
+Status estimator_sample(Filter& f, const In& in, EskfOutput<N, S>& out, EskfDiagnosticsT<S>* diag) noexcept {
   const Status sp = f.predict(in.u, in.delta_f_nominal);
   const Status su = usable(sp) ? f.update(in.y) : sp;
   out.x_hat = f.state();
@@ -109,8 +132,8 @@ Status estimator_sample(Filter& f, const In& in, EskfOutput<N>& out, EskfDiagnos
 
 //! replace_substate's input check (both forms): indices distinct and in [0, N) (invalid_parameter),
 //! values finite (non_finite_input).
-template <int N, int K>
-Status substate_check(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
+template <int N, int K, class S>
+Status substate_check(const std::array<int, K>& idx, const Vec<K, S>& x_o, const Mat<K, K, S>& P_o) noexcept {
   for (int a = 0; a < K; ++a) {
     if (idx[a] < 0 || idx[a] >= N) return Status::invalid_parameter;
     for (int b = 0; b < a; ++b)
@@ -125,23 +148,23 @@ Status substate_check(const std::array<int, K>& idx, const Vec<K>& x_o, const Ma
 //! so a refused predict(), update() or set_estimate() changes nothing. Derived provides status(),
 //! params(), theta_fixed(), propagate(), propagated_trace(), q1_trace(), predict_candidate(),
 //! update_candidate(), estimate_candidate(), accept() and its Candidate.
-template <class Derived, int N, int NU, int NL, int NY>
+template <class Derived, int N, int NU, int NL, int NY, class S = double>
 class CandidateFilter {
  public:
   //! One sample: predict(in.u, in.delta_f_nominal), then update(in.y) (estimator_sample).
-  [[nodiscard]] Status step(const EskfInput<NU, NL, NY>& in, EskfOutput<N>& out,
-                            EskfDiagnostics* diag = nullptr) noexcept {
+  [[nodiscard]] Status step(const EskfInput<NU, NL, NY, S>& in, EskfOutput<N, S>& out,
+                            EskfDiagnosticsT<S>* diag = nullptr) noexcept {
     return estimator_sample(self(), in, out, diag);
   }
 
   //! Time update with the applied input u_{k−1} and the nominal disturbance increment Δf̄
   //! (default 0: the nominal model f̄ = 0 of spec §B.8 gives Ĝ = 0), θ_k from tr(A_d P A_dᵀ) and
   //! tr Q1 (or θ*). non_finite_input / out_of_range leave the state untouched.   seed 004 eq. (9)
-  [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
+  [[nodiscard]] Status predict(const Vec<NU, S>& u, const Vec<NL, S>& delta_f_nominal = Vec<NL, S>::Zero()) noexcept {
     Derived& d = self();
     if (d.status() != Status::ok) return d.status();
     const typename Derived::Propagation AP = d.propagate();
-    const double theta =
+    const S theta =
         young_weight(d.params().theta_policy, d.theta_fixed(), d.propagated_trace(AP), d.q1_trace());
     typename Derived::Candidate c;
     const Status s = d.predict_candidate(u, delta_f_nominal, AP, theta, c);
@@ -151,7 +174,7 @@ class CandidateFilter {
 
   //! Measurement update with Y_k (see Derived::update_candidate for the form and its statuses);
   //! a refused update leaves the state untouched.   Algorithm 1 measurement update
-  [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
+  [[nodiscard]] Status update(const Vec<NY, S>& Y) noexcept {
     Derived& d = self();
     if (d.status() != Status::ok) return d.status();
     typename Derived::Candidate c;
@@ -162,7 +185,7 @@ class CandidateFilter {
 
   //! Overwrites the estimate (fusion, Algorithm 3) after Derived::estimate_candidate's check;
   //! nothing changes when it refuses.
-  [[nodiscard]] Status set_estimate(const Vec<N>& x, const Mat<N, N>& P) noexcept {
+  [[nodiscard]] Status set_estimate(const Vec<N, S>& x, const Mat<N, N, S>& P) noexcept {
     Derived& d = self();
     typename Derived::Candidate c;
     const Status s = d.estimate_candidate(x, P, c);
@@ -175,9 +198,12 @@ class CandidateFilter {
 };
 }  // namespace detail
 
+//! The Joseph form, double only: the reference the U-D form (EskfUd, also in float) is tested
+//! against; its eigen projection has no float counterpart worth flying.
 template <int N, int NU, int NL, int NY>
 class Eskf : public detail::CandidateFilter<Eskf<N, NU, NL, NY>, N, NU, NL, NY> {
  public:
+  using Scalar = double;
   using Params = EskfParams<N, NU, NL, NY>;
   using Input = EskfInput<NU, NL, NY>;
   using Output = EskfOutput<N>;

@@ -44,33 +44,36 @@ namespace adcs {
 
 //! Algorithm 1 in U-D form. N states, NU inputs, NL disturbance channels (l), NY outputs, at most
 //! NG noise columns (B_e columns with q_i > 0 plus B_d U_s columns with d_s,i > 0; construction
-//! refuses more).
-template <int N, int NU, int NL, int NY, int NG = NL + NU>
-class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, NL, NY> {
+//! refuses more). S is the scalar (issue 19: double by default; float for a single-precision FPU,
+//! where the factors keep D >= 0 whatever the rounding; tests/estimate/test_drag_free_eskf_float.cpp
+//! measures what seed 004's states keep of their precision).
+template <int N, int NU, int NL, int NY, int NG = NL + NU, class S = double>
+class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, NU, NL, NY, S> {
  public:
-  using Params = EskfParams<N, NU, NL, NY>;
-  using Input = EskfInput<NU, NL, NY>;
-  using Output = EskfOutput<N>;
-  using Diagnostics = EskfDiagnostics;
-  using State = Vec<N>;
-  using Covariance = Mat<N, N>;
-  using Factors = UdFactors<N>;
+  using Scalar = S;
+  using Params = EskfParams<N, NU, NL, NY, S>;
+  using Input = EskfInput<NU, NL, NY, S>;
+  using Output = EskfOutput<N, S>;
+  using Diagnostics = EskfDiagnosticsT<S>;
+  using State = Vec<N, S>;
+  using Covariance = Mat<N, N, S>;
+  using Factors = UdFactors<N, S>;
   static constexpr int kStates = N, kInputs = NU, kChannels = NL, kOutputs = NY;
 
   explicit EskfUd(const Params& p) noexcept : p_(p) {
     bool ok = valid(p_);
-    sqrt_q_ = p_.q.cwiseMax(0.0).cwiseSqrt();
+    sqrt_q_ = p_.q.cwiseMax(S(0)).cwiseSqrt();
     A_nz_.assign(p_.A_d);
     // lead_ = L: rows L.. of A_d are upper triangular with a nonzero diagonal (then so are those
     // of A_d U: the time update scales them instead of re-factoring, see predict_candidate).
     lead_ = 0;
     for (int i = 0; i < N; ++i)
-      if (A_nz_.first_col(i) < i || !(p_.A_d(i, i) != 0.0)) lead_ = i + 1;
-    UdFactors<NU> Sf = UdFactors<NU>::zero();
+      if (A_nz_.first_col(i) < i || !(p_.A_d(i, i) != S(0))) lead_ = i + 1;
+    UdFactors<NU, S> Sf = UdFactors<NU, S>::zero();
     ok = ok && ud_factorize<NU>(p_.S, Sf) && ud_factorize<NY>(p_.R, Rf_) && ud_factorize<N>(p_.P0, f0_);
     if (ok) {
       // C̃ = U_R⁻¹ C_d: back substitution, rows from the last (U_R unit upper triangular).
-      Mat<NY, N> Ct = p_.C_d;
+      Mat<NY, N, S> Ct = p_.C_d;
       for (int i = NY - 1; i >= 0; --i)
         for (int k = i + 1; k < NY; ++k) Ct.row(i) -= Rf_.U(i, k) * Ct.row(k);
       C_nz_.assign(Ct);
@@ -78,8 +81,8 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
       ok = collect_noise_columns(Sf);
     }
     status_ = ok ? Status::ok : Status::invalid_parameter;
-    const double trP0 = p_.P0.trace();
-    theta_fixed_ = trP0 > 0.0 ? std::sqrt(q1_trace_ / trP0) : 0.0;  // θ* (literal)
+    const S trP0 = p_.P0.trace();
+    theta_fixed_ = trP0 > S(0) ? std::sqrt(q1_trace_ / trP0) : S(0);  // θ* (literal)
     reset();
   }
 
@@ -88,73 +91,73 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   //! estimate untouched.
   Status status() const noexcept { return status_; }
   const Params& params() const noexcept { return p_; }
-  double period_s() const noexcept { return p_.period_s; }
+  S period_s() const noexcept { return p_.period_s; }
 
   //! step(), predict(), update(), set_estimate(): detail::CandidateFilter.
   //! θ* = √(tr Q1 / tr P_0), the fixed θ of ThetaPolicy::fixed_initial.
-  double theta_fixed() const noexcept { return theta_fixed_; }
+  S theta_fixed() const noexcept { return theta_fixed_; }
 
   //! X̂ = X̂_0, P = P_0 (its factors, computed once at construction), θ cleared.
   void reset() noexcept {
     x_ = p_.x0;
     f_ = f0_;
-    theta_ = 0.0;
+    theta_ = S(0);
   }
 
   // ---- Two-phase form (detail::CandidateFilter, PartitionedFilter), as Eskf's.
   struct Candidate {
     State x;
     Factors f;
-    double theta = -1.0;  //!< θ of a prediction; < 0 otherwise
+    S theta = S(-1);  //!< θ of a prediction; < 0 otherwise
   };
 
   //! (A_d U)ᵀ (the first half of the time update; column i is row i of A_d U), from A_d's
   //! nonzeros: contiguous column operations on Uᵀ (SparseRows::mul_by_transpose). Measured on
   //! the Cortex-M7: 6,000 instructions fewer per sample than a row-by-row loop over U's
   //! triangle, which does half the multiply-adds on strided data.
-  using Propagation = Mat<N, N>;
-  Propagation propagate() const noexcept { return A_nz_.mul_by_transpose(Mat<N, N>(f_.U.transpose())); }
+  using Propagation = Mat<N, N, S>;
+  Propagation propagate() const noexcept { return A_nz_.mul_by_transpose(Mat<N, N, S>(f_.U.transpose())); }
   //! tr(A_d P A_dᵀ) = Σ_k D_k ‖(A_d U)(:, k)‖².
-  double propagated_trace(const Propagation& AUt) const noexcept {
+  S propagated_trace(const Propagation& AUt) const noexcept {
     return (f_.D.transpose() * AUt.cwiseAbs2()).sum();
   }
   //! tr Q1, Q1 = 4 B_e (l diag q) B_eᵀ.
-  double q1_trace() const noexcept { return q1_trace_; }
+  S q1_trace() const noexcept { return q1_trace_; }
 
   //! The time update with a given (A_d U)ᵀ and θ (see the file comment). The
   //! limits θ → 0 (no increment bound) and θ → ∞ (A_d P A_dᵀ = 0) as bounded_increment_prediction.
-  [[nodiscard]] Status predict_candidate(const Vec<NU>& u, const Vec<NL>& delta_f_nominal, const Propagation& AUt,
-                                         double theta, Candidate& out) const noexcept {
+  [[nodiscard]] Status predict_candidate(const Vec<NU, S>& u, const Vec<NL, S>& delta_f_nominal, const Propagation& AUt,
+                                         S theta, Candidate& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(u) || !all_finite(delta_f_nominal)) return Status::non_finite_input;
     out.x = detail::extended_state_prediction<N, NU, NL>(A_nz_, p_.B_d, p_.B_e, sqrt_q_, x_, u, delta_f_nominal);
-    double wP = 1.0, wQ1 = 1.0;  // θ → ∞: APA = 0, no inflation
-    if (!(theta > 0.0)) wQ1 = 0.0;  // no increment bound: the plain Kalman prediction (Q1 = 0)
+    S wP = S(1), wQ1 = S(1);  // θ → ∞: APA = 0, no inflation
+    if (!(theta > S(0))) wQ1 = S(0);  // no increment bound: the plain Kalman prediction (Q1 = 0)
     else if (std::isfinite(theta)) {
-      wP = 1.0 + theta;
-      wQ1 = 1.0 + 1.0 / theta;
+      wP = S(1) + theta;
+      wQ1 = S(1) + S(1) / theta;
     }
     // (1+θ) A_d P A_dᵀ = T D̃ Tᵀ with T = A_d U, D̃ = (1+θ) D. Rows L.. of T are upper triangular
     // with T_ii = A_ii ≠ 0 (construction), so with S = diag(T_ii), i ≥ L:
     //   U⁻(:, L:) = T(:, L:) S⁻¹,  D⁻(L:) = S² D̃(L:)              (exact: T22 D̃2 T22ᵀ = U22 S²D̃2 U22ᵀ)
     // and the leading L x L block is T11 D̃1 T11ᵀ, re-factored by Thornton's MWGS (mwgs_ud).
-    Mat<N, N> T = AUt.transpose();
-    const Eigen::Matrix<double, 1, N> wD = wP * f_.D.transpose();
+    Mat<N, N, S> T = AUt.transpose();
+    const Eigen::Matrix<S, 1, N> wD = wP * f_.D.transpose();
     const std::array<int, N> first{};
     mwgs_ud<N, N>(T, wD, first, lead_, lead_, out.f);  // T11 only (rows and columns < L)
     for (int j = lead_; j < N; ++j) {  // the columns mwgs_ud leaves to us, whole
-      const double s_j = T(j, j);
-      double* u = out.f.U.col(j).data();
-      const double* t = T.col(j).data();
+      const S s_j = T(j, j);
+      S* u = out.f.U.col(j).data();
+      const S* t = T.col(j).data();
       for (int i = 0; i < j; ++i) u[i] = t[i] / s_j;
-      u[j] = 1.0;
-      for (int i = j + 1; i < N; ++i) u[i] = 0.0;
+      u[j] = S(1);
+      for (int i = j + 1; i < N; ++i) u[i] = S(0);
       out.f.D(j) = s_j * s_j * wD(j);
     }
     // + (1 + 1/θ) Q1 + Q2 = Σ_k w_k g_k g_kᵀ: one Agee–Turner rank-one update per noise column.
     for (int k = 0; k < ng_; ++k) {
-      const double wk = g_weight_(k) + wQ1 * g_weight_q1_(k);
-      Vec<N> g = G_.col(k);
+      const S wk = g_weight_(k) + wQ1 * g_weight_q1_(k);
+      Vec<N, S> g = G_.col(k);
       agee_turner_update<N>(out.f, wk, g);
     }
     if (!all_finite(out.x) || !representable(out.f)) return Status::out_of_range;
@@ -165,31 +168,31 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   //! The measurement update (update()): z = U_R⁻¹ Y, then one Bierman update per row of C̃.
   //! non_finite_input / out_of_range (overflow) change nothing. The innovation variances are ≥ the
   //! decorrelated R's D_R > 0, so there is no singular case.   Algorithm 1 measurement update
-  [[nodiscard]] Status update_candidate(const Vec<NY>& Y, Candidate& out) const noexcept {
+  [[nodiscard]] Status update_candidate(const Vec<NY, S>& Y, Candidate& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(Y)) return Status::non_finite_input;
-    Vec<NY> z = Y;  // U_R z = Y, rows from the last
+    Vec<NY, S> z = Y;  // U_R z = Y, rows from the last
     for (int i = NY - 1; i >= 0; --i)
       for (int k = i + 1; k < NY; ++k) z(i) -= Rf_.U(i, k) * z(k);
     out.x = x_;
     out.f = f_;
-    Vec<N> fv, k;
+    Vec<N, S> fv, k;
     for (int i = 0; i < NY; ++i) {
       fv.setZero();  // f = Uᵀ c̃ᵢᵀ from c̃ᵢ's nonzeros
       for (int e = C_nz_.start[i]; e < C_nz_.start[i + 1]; ++e) fv += C_nz_.val[e] * out.f.U.row(C_nz_.col[e]).transpose();
-      const double innovation = z(i) - C_nz_.row_dot(i, out.x);
+      const S innovation = z(i) - C_nz_.row_dot(i, out.x);
       bierman_update<N>(out.f, fv, Rf_.D(i), first_[i], k);
       out.x += k * innovation;
     }
     if (!all_finite(out.x) || !representable(out.f)) return Status::out_of_range;
-    out.theta = -1.0;
+    out.theta = S(-1);
     return Status::ok;
   }
 
   void accept(const Candidate& c) noexcept {
     x_ = c.x;
     f_ = c.f;
-    if (c.theta >= 0.0) theta_ = c.theta;
+    if (c.theta >= S(0)) theta_ = c.theta;
   }
 
   const State& state() const noexcept { return x_; }
@@ -197,8 +200,8 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   const Factors& factors() const noexcept { return f_; }
   //! P = U D Uᵀ, formed (N³/6: for tests and telemetry, not the step).
   Covariance covariance() const noexcept { return ud_covariance<N>(f_); }
-  double covariance_entry(int i, int j) const noexcept { return ud_covariance_entry<N>(f_, i, j); }
-  double theta() const noexcept { return theta_; }
+  S covariance_entry(int i, int j) const noexcept { return ud_covariance_entry<N>(f_, i, j); }
+  S theta() const noexcept { return theta_; }
   //! Always 0: the factored covariance never leaves the PSD cone (Eskf counts its projections).
   long psd_projections() const noexcept { return 0; }
 
@@ -206,9 +209,9 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   //! is not symmetric PSD (it has no U-D factors).
   [[nodiscard]] Status estimate_candidate(const State& x, const Covariance& P, Candidate& out) const noexcept {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
-    if (!symmetric<N>(P) || !ud_factorize<N>(P, out.f) || !representable(out.f)) return Status::invalid_parameter;
+    if (!symmetric<N, S>(P) || !ud_factorize<N>(P, out.f) || !representable(out.f)) return Status::invalid_parameter;
     out.x = x;
-    out.theta = -1.0;
+    out.theta = S(-1);
     return Status::ok;
   }
 
@@ -221,13 +224,13 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   //! repeated indices or a P_o that is not symmetric PSD, non_finite_input for non-finite values,
   //! out_of_range for a result beyond double's range (representable); nothing changes then.
   template <int K>
-  [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
+  [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K, S>& x_o, const Mat<K, K, S>& P_o) noexcept {
     if (const Status s = detail::substate_check<N, K>(idx, x_o, P_o); s != Status::ok) return s;
-    UdFactors<K> fo = UdFactors<K>::zero();
-    if (!symmetric<K>(P_o) || !ud_factorize<K>(P_o, fo)) return Status::invalid_parameter;
+    UdFactors<K, S> fo = UdFactors<K, S>::zero();
+    if (!symmetric<K, S>(P_o) || !ud_factorize<K>(P_o, fo)) return Status::invalid_parameter;
     Factors f = f_;
-    Mat<N, K> c;
-    Vec<K> d;
+    Mat<N, K, S> c;
+    Vec<K, S> d;
     for (int a = 0; a < K; ++a) {
       c.col(a) = f.U.col(idx[a]);
       d(a) = f.D(idx[a]);
@@ -236,10 +239,10 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
       c.row(idx[a]).setZero();
       f.U.row(idx[a]).setZero();
       f.U.col(idx[a]).setZero();
-      f.U(idx[a], idx[a]) = 1.0;
-      f.D(idx[a]) = 0.0;
+      f.U(idx[a], idx[a]) = S(1);
+      f.D(idx[a]) = S(0);
     }
-    Vec<N> v;
+    Vec<N, S> v;
     for (int a = 0; a < K; ++a) {  // + D_j c_j c_jᵀ
       v = c.col(a);
       agee_turner_update<N>(f, d(a), v);
@@ -264,7 +267,7 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   //! entries below the diagonal are never written. So no separate finiteness pass over U and D.
   static bool representable(const Factors& f) noexcept {
     for (int i = 0; i < N; ++i) {
-      double p_ii = 0.0;
+      S p_ii = S(0);
       for (int k = i; k < N; ++k) p_ii += f.U(i, k) * f.U(i, k) * f.D(k);
       if (!std::isfinite(p_ii)) return false;
     }
@@ -274,24 +277,24 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   //! G and its weights: B_e's columns with q_i > 0 (weight 4 l q_i, times 1 + 1/θ per step) and
   //! B_d U_s's with d_s,i > 0 (weight d_s,i); all-zero columns (another block's) are left out.
   //! False when more than NG remain.
-  bool collect_noise_columns(const UdFactors<NU>& Sf) noexcept {
+  bool collect_noise_columns(const UdFactors<NU, S>& Sf) noexcept {
     G_.setZero();
     g_weight_.setZero();
     g_weight_q1_.setZero();
-    q1_trace_ = 0.0;
+    q1_trace_ = S(0);
     int& m = ng_;
     m = 0;
     for (int i = 0; i < NL; ++i) {
-      const double wq = 4.0 * static_cast<double>(NL) * p_.q(i);  // Q1 = 4 B_e (l diag q) B_eᵀ
-      if (!(wq > 0.0) || p_.B_e.col(i).isZero(0.0)) continue;
+      const S wq = S(4) * static_cast<S>(NL) * p_.q(i);  // Q1 = 4 B_e (l diag q) B_eᵀ
+      if (!(wq > S(0)) || p_.B_e.col(i).isZero(S(0))) continue;
       if (m == NG) return false;
       G_.col(m) = p_.B_e.col(i);
       g_weight_q1_(m++) = wq;
       q1_trace_ += wq * p_.B_e.col(i).squaredNorm();
     }
-    const Mat<N, NU> BU = p_.B_d * Sf.U;  // Q2 = B_d S B_dᵀ = (B_d U_s) D_s (B_d U_s)ᵀ
+    const Mat<N, NU, S> BU = p_.B_d * Sf.U;  // Q2 = B_d S B_dᵀ = (B_d U_s) D_s (B_d U_s)ᵀ
     for (int i = 0; i < NU; ++i) {
-      if (!(Sf.D(i) > 0.0) || BU.col(i).isZero(0.0)) continue;
+      if (!(Sf.D(i) > S(0)) || BU.col(i).isZero(S(0))) continue;
       if (m == NG) return false;
       G_.col(m) = BU.col(i);
       g_weight_(m++) = Sf.D(i);
@@ -300,23 +303,23 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG>, N, NU, 
   }
 
   Params p_;
-  SparseRows<N, N> A_nz_;
-  SparseRows<NY, N> C_nz_;  //!< C̃ = U_R⁻¹ C_d
+  SparseRows<N, N, S> A_nz_;
+  SparseRows<NY, N, S> C_nz_;  //!< C̃ = U_R⁻¹ C_d
   std::array<int, NY> first_{};
   int lead_ = N;                  //!< L: rows L.. of A_d upper triangular, nonzero diagonal
   int ng_ = 0;                    //!< noise columns in use (≤ NG)
-  UdFactors<NY> Rf_ = UdFactors<NY>::zero();
+  UdFactors<NY, S> Rf_ = UdFactors<NY, S>::zero();
   Factors f0_ = Factors::zero();
-  Mat<N, NG> G_ = Mat<N, NG>::Zero();
-  Eigen::Matrix<double, 1, NG> g_weight_ = Eigen::Matrix<double, 1, NG>::Zero();     //!< Q2 columns: d_s,i
-  Eigen::Matrix<double, 1, NG> g_weight_q1_ = Eigen::Matrix<double, 1, NG>::Zero();  //!< Q1 columns: 4 l q_i
-  Vec<NL> sqrt_q_ = Vec<NL>::Zero();
-  double q1_trace_ = 0.0;
-  double theta_fixed_ = 0.0;
+  Mat<N, NG, S> G_ = Mat<N, NG, S>::Zero();
+  Eigen::Matrix<S, 1, NG> g_weight_ = Eigen::Matrix<S, 1, NG>::Zero();     //!< Q2 columns: d_s,i
+  Eigen::Matrix<S, 1, NG> g_weight_q1_ = Eigen::Matrix<S, 1, NG>::Zero();  //!< Q1 columns: 4 l q_i
+  Vec<NL, S> sqrt_q_ = Vec<NL, S>::Zero();
+  S q1_trace_ = S(0);
+  S theta_fixed_ = S(0);
   Status status_ = Status::ok;
   State x_ = State::Zero();
   Factors f_ = Factors::zero();
-  double theta_ = 0.0;
+  S theta_ = S(0);
 };
 
 ADCS_ASSERT_COMPONENT(EskfUd<3, 1, 1, 1>);

@@ -36,10 +36,12 @@ Mat<N, N> bounded_increment_prediction(const Mat<N, N>& APA, const Mat<N, N>& Q1
 
 //! θ for this step: θ_k from the current A P Aᵀ, or the fixed θ*. 0 when tr Q1 = 0.
 //! The same from the traces tr(A P Aᵀ) and tr Q1 (a filter split into blocks sums them).
-inline double young_weight(ThetaPolicy policy, double theta_fixed, double trace_APA, double trace_Q1) noexcept {
-  if (!(trace_Q1 > 0.0)) return 0.0;
+//! In the filter's scalar S (issue 19: the U-D form also runs in float).
+template <class S>
+S young_weight(ThetaPolicy policy, S theta_fixed, identity_t<S> trace_APA, identity_t<S> trace_Q1) noexcept {
+  if (!(trace_Q1 > S(0))) return S(0);
   if (policy == ThetaPolicy::fixed_initial) return theta_fixed;
-  return trace_APA > 0.0 ? std::sqrt(trace_Q1 / trace_APA) : INFINITY;
+  return trace_APA > S(0) ? std::sqrt(trace_Q1 / trace_APA) : std::numeric_limits<S>::infinity();
 }
 template <int N>
 double young_weight(ThetaPolicy policy, double theta_fixed, const Mat<N, N>& APA, const Mat<N, N>& Q1) noexcept {

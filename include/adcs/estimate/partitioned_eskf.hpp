@@ -12,6 +12,7 @@
 // Construction rejects (invalid_parameter) a partition that is not one, or any nonzero coupling.
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
@@ -42,12 +43,16 @@ class PartitionedFilter {
   static_assert(Block2::kInputs == NU && Block2::kChannels == NL, "PartitionedFilter: the blocks share u and Δf̄");
   static constexpr int N = N1 + N2;
   static constexpr int NY = NY1 + NY2;
-  using Params = EskfParams<N, NU, NL, NY>;
-  using Input = EskfInput<NU, NL, NY>;
-  using Output = EskfOutput<N>;
-  using Diagnostics = EskfDiagnostics;
-  using State = Vec<N>;
-  using Covariance = Mat<N, N>;
+  //! The blocks' scalar (issue 19: double, or float for two EskfUd blocks in float).
+  using Scalar = typename Block1::Scalar;
+  using S = Scalar;
+  static_assert(std::is_same_v<typename Block2::Scalar, S>, "PartitionedFilter: the blocks share the scalar");
+  using Params = EskfParams<N, NU, NL, NY, S>;
+  using Input = EskfInput<NU, NL, NY, S>;
+  using Output = EskfOutput<N, S>;
+  using Diagnostics = EskfDiagnosticsT<S>;
+  using State = Vec<N, S>;
+  using Covariance = Mat<N, N, S>;
 
   using Partition = FilterPartition<N1, NY1>;
 
@@ -57,8 +62,8 @@ class PartitionedFilter {
     if (status_ == Status::ok && !uncoupled(p)) status_ = Status::invalid_parameter;
     if (status_ == Status::ok && b1_.status() != Status::ok) status_ = b1_.status();
     if (status_ == Status::ok && b2_.status() != Status::ok) status_ = b2_.status();
-    const double trP0 = p.P0.trace();
-    theta_fixed_ = trP0 > 0.0 ? std::sqrt((b1_.q1_trace() + b2_.q1_trace()) / trP0) : 0.0;  // θ* of the whole
+    const S trP0 = p.P0.trace();
+    theta_fixed_ = trP0 > S(0) ? std::sqrt((b1_.q1_trace() + b2_.q1_trace()) / trP0) : S(0);  // θ* of the whole
     assemble_state();
   }
 
@@ -67,7 +72,7 @@ class PartitionedFilter {
   //! (Eskf::status: finite model, q >= 0, S PSD, R SPD, P_0 PSD with tr > 0). A refused filter
   //! answers invalid_parameter from predict() and update() with its estimate untouched.
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return b1_.period_s(); }
+  S period_s() const noexcept { return b1_.period_s(); }
 
   //! One sample: predict(in.u, in.delta_f_nominal), then update(in.y) (detail::estimator_sample).
   [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
@@ -77,16 +82,16 @@ class PartitionedFilter {
   void reset() noexcept {
     b1_.reset();
     b2_.reset();
-    theta_ = 0.0;
+    theta_ = S(0);
     assemble_state();
   }
 
   //! Algorithm 1 time update (see Eskf::predict) with the θ of the whole filter.
-  [[nodiscard]] Status predict(const Vec<NU>& u, const Vec<NL>& delta_f_nominal = Vec<NL>::Zero()) noexcept {
+  [[nodiscard]] Status predict(const Vec<NU, S>& u, const Vec<NL, S>& delta_f_nominal = Vec<NL, S>::Zero()) noexcept {
     if (status_ != Status::ok) return status_;
     const typename Block1::Propagation APA1 = b1_.propagate();
     const typename Block2::Propagation APA2 = b2_.propagate();
-    const double theta = young_weight(policy_, theta_fixed_, b1_.propagated_trace(APA1) + b2_.propagated_trace(APA2),
+    const S theta = young_weight(policy_, theta_fixed_, b1_.propagated_trace(APA1) + b2_.propagated_trace(APA2),
                                       b1_.q1_trace() + b2_.q1_trace());
     typename Block1::Candidate c1;
     typename Block2::Candidate c2;
@@ -101,13 +106,13 @@ class PartitionedFilter {
   }
 
   //! Algorithm 1 measurement update (see Eskf::update), Y in the full output order.
-  [[nodiscard]] Status update(const Vec<NY>& Y) noexcept {
+  [[nodiscard]] Status update(const Vec<NY, S>& Y) noexcept {
     if (status_ != Status::ok) return status_;
     // Checked here, not only per block: block 1 could otherwise report its own failure for a Y
     // whose non-finite entries sit in block 2's outputs.
     if (!all_finite(Y)) return Status::non_finite_input;
-    Vec<NY1> Y1;
-    Vec<NY2> Y2;
+    Vec<NY1, S> Y1;
+    Vec<NY2, S> Y2;
     for (int i = 0; i < NY1; ++i) Y1(i) = Y(y1_[i]);
     for (int i = 0; i < NY2; ++i) Y2(i) = Y(y2_[i]);
     typename Block1::Candidate c1;
@@ -136,8 +141,8 @@ class PartitionedFilter {
   }
   //! P(idx, idx) without assembling P.
   template <int K>
-  Mat<K, K> covariance_of(const std::array<int, K>& idx) const noexcept {
-    Mat<K, K> out = Mat<K, K>::Zero();
+  Mat<K, K, S> covariance_of(const std::array<int, K>& idx) const noexcept {
+    Mat<K, K, S> out = Mat<K, K, S>::Zero();
     for (int a = 0; a < K; ++a)
       for (int b = 0; b < K; ++b) {
         const Where wa = where(idx[a]), wb = where(idx[b]);
@@ -146,7 +151,7 @@ class PartitionedFilter {
       }
     return out;
   }
-  double theta() const noexcept { return theta_; }
+  S theta() const noexcept { return theta_; }
   long psd_projections() const noexcept { return b1_.psd_projections() + b2_.psd_projections(); }
   const Block1& block1() const noexcept { return b1_; }
   const Block2& block2() const noexcept { return b2_; }
@@ -158,7 +163,7 @@ class PartitionedFilter {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
     for (int i = 0; i < N1; ++i)
       for (int j = 0; j < N2; ++j)
-        if (P(s1_[i], s2_[j]) != 0.0 || P(s2_[j], s1_[i]) != 0.0) return Status::invalid_parameter;
+        if (P(s1_[i], s2_[j]) != S(0) || P(s2_[j], s1_[i]) != S(0)) return Status::invalid_parameter;
     typename Block1::State x1;
     typename Block1::Covariance P1;
     typename Block2::State x2;
@@ -185,7 +190,7 @@ class PartitionedFilter {
   //! Eskf::replace_substate in full-state indices; all K states must lie in one block
   //! (invalid_parameter otherwise, nothing changed).
   template <int K>
-  [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K>& x_o, const Mat<K, K>& P_o) noexcept {
+  [[nodiscard]] Status replace_substate(const std::array<int, K>& idx, const Vec<K, S>& x_o, const Mat<K, K, S>& P_o) noexcept {
     std::array<int, K> local{};
     int block = 0;
     for (int a = 0; a < K; ++a) {
@@ -239,9 +244,9 @@ class PartitionedFilter {
   }
 
   template <int M, int MY>
-  static EskfParams<M, NU, NL, MY> sub_params(const Params& p, const std::array<int, M>& s,
-                                             const std::array<int, MY>& y) noexcept {
-    EskfParams<M, NU, NL, MY> b;
+  static EskfParams<M, NU, NL, MY, S> sub_params(const Params& p, const std::array<int, M>& s,
+                                                const std::array<int, MY>& y) noexcept {
+    EskfParams<M, NU, NL, MY, S> b;
     for (int i = 0; i < M; ++i) {
       for (int j = 0; j < M; ++j) {
         b.A_d(i, j) = p.A_d(s[i], s[j]);
@@ -265,21 +270,22 @@ class PartitionedFilter {
   //! True when nothing couples the blocks: A_d, P_0, B_e diag(q) B_eᵀ and B_d S B_dᵀ have no
   //! cross-block entries, C_d maps each block's states to its own outputs only, R is block-diagonal.
   bool uncoupled(const Params& p) const noexcept {
-    const Mat<N, N> Q1 = p.B_e * p.q.asDiagonal() * p.B_e.transpose();
-    const Mat<N, N> Q2 = p.B_d * p.S * p.B_d.transpose();
+    const Mat<N, N, S> Q1 = p.B_e * p.q.asDiagonal() * p.B_e.transpose();
+    const Mat<N, N, S> Q2 = p.B_d * p.S * p.B_d.transpose();
+    const S zero = S(0);
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j)
-        if (block_of_[i] != block_of_[j] && (p.A_d(i, j) != 0.0 || p.P0(i, j) != 0.0 || Q1(i, j) != 0.0 || Q2(i, j) != 0.0))
+        if (block_of_[i] != block_of_[j] && (p.A_d(i, j) != zero || p.P0(i, j) != zero || Q1(i, j) != zero || Q2(i, j) != zero))
           return false;
     for (int i = 0; i < NY1; ++i) {
       for (int j = 0; j < N2; ++j)
-        if (p.C_d(y1_[i], s2_[j]) != 0.0) return false;
+        if (p.C_d(y1_[i], s2_[j]) != zero) return false;
       for (int j = 0; j < NY2; ++j)
-        if (p.R(y1_[i], y2_[j]) != 0.0 || p.R(y2_[j], y1_[i]) != 0.0) return false;
+        if (p.R(y1_[i], y2_[j]) != zero || p.R(y2_[j], y1_[i]) != zero) return false;
     }
     for (int i = 0; i < NY2; ++i)
       for (int j = 0; j < N1; ++j)
-        if (p.C_d(y2_[i], s1_[j]) != 0.0) return false;
+        if (p.C_d(y2_[i], s1_[j]) != zero) return false;
     return true;
   }
 
@@ -297,8 +303,8 @@ class PartitionedFilter {
   Block1 b1_;
   Block2 b2_;
   ThetaPolicy policy_ = ThetaPolicy::trace_optimal;
-  double theta_fixed_ = 0.0;
-  double theta_ = 0.0;
+  S theta_fixed_ = S(0);
+  S theta_ = S(0);
   State x_ = State::Zero();
 };
 
