@@ -216,13 +216,12 @@ find_package(Python3 COMPONENTS Interpreter)
 if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
   add_test(NAME target_m4f_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
-                   ${_m4f_obj} adcs_m4f_mrp_pd_step adcs_m4f_rw_allocation_step adcs_m4f_hybrid_adaptive_step
-                   adcs_m4f_ppc_neural_step adcs_m4f_adaptive_tracking_step adcs_m4f_eso_adrc_attitude_step
-                   adcs_m4f_eso_adrc_attitude_init adcs_m4f_prescribed_time_se3_step adcs_m4f_prescribed_time_se3_init
-                   adcs_m4f_ftsmc_se3_step adcs_m4f_ftsmc_se3_init adcs_m4f_saturated_quantizer_step
+                   ${_m4f_obj} adcs_m4f_adaptive_tracking_step adcs_m4f_eso_adrc_attitude_step
+                   adcs_m4f_eso_adrc_attitude_init adcs_m4f_ftsmc_se3_step adcs_m4f_ftsmc_se3_init adcs_m4f_saturated_quantizer_step
                    adcs_m4f_saturated_quantizer_init adcs_m4f_ud_factorize adcs_m4f_mwgs_ud
                    adcs_m4f_agee_turner_update adcs_m4f_bierman_update adcs_m4f_sparse_propagate
-                   adcs_m4f_drag_free_eskf_step)
+                   adcs_m4f_drag_free_eskf_step adcs_m4f_saturated_esf_step adcs_m4f_saturated_esf_init
+                   adcs_m4f_drag_free_adrc_step adcs_m4f_drag_free_adrc_init adcs_m4f_pid_step)
   add_test(NAME target_m4f_c_api_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
                    ${_m4f_c_lib} adcs_mrp_pd4f_init adcs_mrp_pd4f_step adcs_rw_alloc4f_init adcs_rw_alloc4f_step

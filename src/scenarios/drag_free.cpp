@@ -200,6 +200,8 @@ double rms(const std::vector<double>& e) {
 }
 
 // ------------------------------------------------------------------ item 1: L1 / L2 / L3
+//! S: the filters' scalar (issue 19, `scalar`); the truth, the sensors and the metrics are double.
+template <class S>
 RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
   const DragFreeConfig c = make_config(p);
   const double h = c.plant.period_s;
@@ -210,10 +212,10 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
   Vec<27> X = Vec<27>::Zero();
   auto put_f = [&](double t) { c.set_disturbance(X, t); };
   put_f(t0);
-  DragFreeEskf alg1(c.eskf());
-  SaturatedEsf L[3] = {SaturatedEsf(c.esf(0, SaturationUpdate::truncated, true)),
-                       SaturatedEsf(c.esf(0, SaturationUpdate::truncated, false)),
-                       SaturatedEsf(c.esf(0, SaturationUpdate::skip, true))};
+  DragFreeEskfT<S> alg1(c.eskf().template cast<S>());
+  SaturatedEsfT<S> L[3] = {SaturatedEsfT<S>(c.esf(0, SaturationUpdate::truncated, true).template cast<S>()),
+                           SaturatedEsfT<S>(c.esf(0, SaturationUpdate::truncated, false).template cast<S>()),
+                           SaturatedEsfT<S>(c.esf(0, SaturationUpdate::skip, true).template cast<S>())};
   std::unique_ptr<CsvRecorder> csv;
   if (!ctx.csv_path.empty())
     csv = std::make_unique<CsvRecorder>(
@@ -227,33 +229,34 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
   for (long k = 0; k <= n; ++k) {
     const double t = t0 + k * h;
     if (k > 0) {
-      if (alg1.predict(u) != Status::ok) throw SimError("Algorithm 1 predict failed");
+      if (alg1.predict(scalar_cast<S>(u)) != Status::ok) throw SimError("Algorithm 1 predict failed");
       for (auto& l : L)
-        if (l.predict(0.0) != Status::ok) throw SimError("Algorithm 2 predict failed");
+        if (l.predict(S(0)) != Status::ok) throw SimError("Algorithm 2 predict failed");
     }
     const Vec<9> Y = c.sensors(X, rng);
-    if (alg1.update(Y) != Status::ok) throw SimError("Algorithm 1 update failed");
+    if (alg1.update(scalar_cast<S>(Y)) != Status::ok) throw SimError("Algorithm 1 update failed");
     const Vec<9> w = c.input_noise(rng);
     const double y = drag_free_accelerometer(c.plant, X, w.segment<3>(3), 0) + c.noise.sigma_acc * rng.a[0].normal();
     const double yc = saturate_accelerometer(c.plant, y);
     saturated += (yc != y);
     for (int l = 0; l < 3; ++l) {
-      if (!usable(L[l].update(l == 1 ? y : yc, 0.0))) throw SimError("Algorithm 2 update failed");
+      if (!usable(L[l].update(narrow_scalar<S>(l == 1 ? y : yc), S(0)))) throw SimError("Algorithm 2 update failed");
       // r, ṙ from Algorithm 1 (the fusion structure) or the truth proxy; f̂ stays the copy's own.
-      Vec3 xo = L[l].state();
-      Mat3 Po = Mat3::Zero();
+      Vec<3, S> xo = L[l].state();
+      Mat<3, 3, S> Po = Mat<3, 3, S>::Zero();
       Po(2, 2) = L[l].covariance()(2, 2);
       if (truth_rates) {
-        xo.head<2>() << X(DragFreeIndex::r), X(DragFreeIndex::r_dot);
+        xo.template head<2>() << narrow_scalar<S>(X(DragFreeIndex::r)), narrow_scalar<S>(X(DragFreeIndex::r_dot));
       } else {
-        xo.head<2>() << alg1.state()(DragFreeIndex::r), alg1.state()(DragFreeIndex::r_dot);
-        Po.topLeftCorner<2, 2>() = alg1.covariance_of<2>({DragFreeIndex::r, DragFreeIndex::r_dot});
+        xo.template head<2>() << alg1.state()(DragFreeIndex::r), alg1.state()(DragFreeIndex::r_dot);
+        Po.template topLeftCorner<2, 2>() = alg1.template covariance_of<2>({DragFreeIndex::r, DragFreeIndex::r_dot});
       }
       if (L[l].set_estimate(xo, Po) != Status::ok) throw SimError("fusion failed");
-      if (t - t0 >= 10.0) err[l].push_back(L[l].state()(2) - X(DragFreeIndex::F_Dsc));
+      if (t - t0 >= 10.0) err[l].push_back(double(L[l].state()(2)) - X(DragFreeIndex::F_Dsc));
     }
     if (csv) {
-      const double row[7] = {t - t0, X(DragFreeIndex::F_Dsc), L[0].state()(2), L[1].state()(2), L[2].state()(2), y, yc};
+      const double row[7] = {t - t0, X(DragFreeIndex::F_Dsc), double(L[0].state()(2)), double(L[1].state()(2)),
+                             double(L[2].state()(2)), y, yc};
       if (k == n) csv->record_final(row); else csv->record(row);
     }
     X = (c.model.A_d * X + c.model.B_d * (u + w)).eval();  // truth (§B.3), then f(t_{k+1})
@@ -293,6 +296,77 @@ RunResult run_estimators(const ParamSet& p, const RunContext& ctx) {
 }
 
 // ------------------------------------------------------------------ items 2-9: closed loop
+//! The flight side of one closed-loop sample (issue 19: `scalar`): Algorithm 1 and its non-fused
+//! copy, the three Algorithm 2 filters and their non-fused copies, the ADRC and the fusion, in the
+//! scalar S; the plant, the sensors and the metrics stay double. The loop below talks to it in
+//! double through this interface, so that it is compiled once and only the flight code twice (as
+//! sim::LawAtScalar does for the other scenarios). In double every call is the direct one: the
+//! casts at the boundary are the identity, so the double run is bit for bit what it was.
+class DragFreeFlight {
+ public:
+  virtual ~DragFreeFlight() = default;
+  //! Step 1: every filter's time update with u_{k−1}.
+  virtual bool predict(const Vec<9>& u_prev) = 0;
+  //! Step 2: Algorithm 1 (both copies) with the position/attitude sensors.
+  virtual bool update_alg1(const Vec<9>& Y) = 0;
+  //! Step 3: the ADRC on Algorithm 1's posterior and Algorithm 2's predicted f̂; u in double.
+  virtual Status control(const Vec3& phi_cmd, Vec<9>& u) = 0;
+  //! Step 5: axis j's Algorithm 2 (both copies) with the reading y_c and u_F.
+  virtual bool update_alg2(int j, double y_c, double u_F) = 0;
+  //! Step 6: Algorithm 3 on axis j.
+  virtual Status fuse(int j, FusedCovariance mode) = 0;
+  virtual Vec<27> alg1_state() const = 0;
+  virtual Vec<27> alg1_alone_state() const = 0;
+  virtual Vec3 alg2_alone_state(int j) const = 0;
+  virtual long psd_projections() const = 0;
+};
+
+template <class S>
+class DragFreeFlightT final : public DragFreeFlight {
+ public:
+  DragFreeFlightT(const DragFreeConfig& c, const DragFreeAdrcParams& ap)
+      : alg1_(c.eskf().template cast<S>()), alg1_alone_(c.eskf().template cast<S>()), adrc_(ap.cast<S>()) {
+    for (int j = 0; j < 3; ++j) {
+      alg2_.emplace_back(c.esf(j, SaturationUpdate::truncated, true).template cast<S>());
+      alg2_alone_.emplace_back(c.esf(j, SaturationUpdate::truncated, true).template cast<S>());
+    }
+    if (alg1_.status() != Status::ok) throw ParamError("drag-free: Algorithm 1 parameters rejected");
+    if (adrc_.status() != Status::ok) throw ParamError("drag-free ADRC parameters rejected");
+  }
+  bool predict(const Vec<9>& u_prev) override {
+    const Vec<9, S> u = scalar_cast<S>(u_prev);
+    bool ok = alg1_.predict(u) == Status::ok && alg1_alone_.predict(u) == Status::ok;
+    for (int j = 0; j < 3; ++j)
+      ok = ok && alg2_[j].predict(u(3 + j)) == Status::ok && alg2_alone_[j].predict(u(3 + j)) == Status::ok;
+    return ok;
+  }
+  bool update_alg1(const Vec<9>& Y) override {
+    const Vec<9, S> y = scalar_cast<S>(Y);
+    return alg1_.update(y) == Status::ok && alg1_alone_.update(y) == Status::ok;
+  }
+  Status control(const Vec3& phi_cmd, Vec<9>& u) override {
+    const Vec<3, S> F_hat(alg2_[0].state()(2), alg2_[1].state()(2), alg2_[2].state()(2));
+    DragFreeActuationT<S> act;
+    const Status s = adrc_.step(DragFreeAdrcInputT<S>{alg1_.state(), F_hat, scalar_cast<S>(phi_cmd)}, act);
+    u = act.stacked().template cast<double>();
+    return s;
+  }
+  bool update_alg2(int j, double y_c, double u_F) override {
+    const S y = narrow_scalar<S>(y_c), uf = narrow_scalar<S>(u_F);
+    return usable(alg2_[j].update(y, uf)) && usable(alg2_alone_[j].update(y, uf));
+  }
+  Status fuse(int j, FusedCovariance mode) override { return fuse_axis(alg1_, alg2_[j], j, mode); }
+  Vec<27> alg1_state() const override { return alg1_.state().template cast<double>(); }
+  Vec<27> alg1_alone_state() const override { return alg1_alone_.state().template cast<double>(); }
+  Vec3 alg2_alone_state(int j) const override { return alg2_alone_[j].state().template cast<double>(); }
+  long psd_projections() const override { return alg1_.psd_projections(); }
+
+ private:
+  DragFreeEskfT<S> alg1_, alg1_alone_;
+  std::vector<SaturatedEsfT<S>> alg2_, alg2_alone_;
+  DragFreeAdrcT<S> adrc_;
+};
+
 struct LoopOutcome {
   RunResult result;
   double rx_max = 0.0, rx_mean = 0.0;
@@ -319,20 +393,16 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
   ap.integral = p.get_name("integral") == "raw_sum" ? IntegralForm::raw_sum : IntegralForm::scaled_sum;
   ap.limit = p.get_number("actuator_limit");
   ap.x_law = x_law;
-  DragFreeAdrc adrc(ap);
-  if (adrc.status() != Status::ok) throw ParamError("drag-free ADRC parameters rejected");
+  const std::unique_ptr<DragFreeFlight> flight =
+      p.get_name("scalar") == "float" ? std::unique_ptr<DragFreeFlight>(std::make_unique<DragFreeFlightT<float>>(c, ap))
+                                      : std::make_unique<DragFreeFlightT<double>>(c, ap);
   const FusedCovariance fmode = p.get_name("fused_covariance") == "literal" ? FusedCovariance::literal
                                                                              : FusedCovariance::block_diagonal;
   const Vec3 step_cmd = p.get_vec<3>("step_cmd_rad");
   const double t_on = p.get_number("step_on_s"), t_off = p.get_number("step_off_s");
 
-  DragFreeEskf alg1(c.eskf()), alg1_alone(c.eskf());
-  std::vector<SaturatedEsf> alg2, alg2_alone, alg2_joseph;
-  for (int j = 0; j < 3; ++j) {
-    alg2.emplace_back(c.esf(j, SaturationUpdate::truncated, true));
-    alg2_alone.emplace_back(c.esf(j, SaturationUpdate::truncated, true));
-    alg2_joseph.emplace_back(c.esf(j, SaturationUpdate::truncated, true));
-  }
+  std::vector<SaturatedEsf> alg2_joseph;
+  for (int j = 0; j < 3; ++j) alg2_joseph.emplace_back(c.esf(j, SaturationUpdate::truncated, true));
   // Issue 20, joseph_shadow=on: the Joseph-form filter (the pre-factorisation DragFreeEskf) shadows
   // alg1 on the same inputs, fused with its own Algorithm 2 copies, so the run reports how far the
   // U-D filter's estimates are from it (metrics alg1_vs_joseph_*); it does not act on the loop.
@@ -380,23 +450,16 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
     const Vec3 phi_cmd = (t >= t_on && t < t_off) ? step_cmd : Vec3::Zero();
     // 1. predictions with u_{k-1}
     if (k > 0) {
-      bool ok = alg1.predict(u_prev) == Status::ok && alg1_alone.predict(u_prev) == Status::ok &&
-                (!shadow || alg1_joseph.predict(u_prev) == Status::ok);
-      for (int j = 0; j < 3; ++j)
-        ok = ok && alg2[j].predict(u_prev(3 + j)) == Status::ok && alg2_alone[j].predict(u_prev(3 + j)) == Status::ok &&
-             (!shadow || alg2_joseph[j].predict(u_prev(3 + j)) == Status::ok);
+      bool ok = flight->predict(u_prev) && (!shadow || alg1_joseph.predict(u_prev) == Status::ok);
+      for (int j = 0; j < 3; ++j) ok = ok && (!shadow || alg2_joseph[j].predict(u_prev(3 + j)) == Status::ok);
       if (!ok) throw SimError("drag-free: filter prediction failed at t = " + format_number(t) + " s");
     }
     // 2. position/attitude sensors, Algorithm 1 updates
     const Vec<9> Y = c.sensors(X, rng);
-    if (alg1.update(Y) != Status::ok || alg1_alone.update(Y) != Status::ok ||
-        (shadow && alg1_joseph.update(Y) != Status::ok))
+    if (!flight->update_alg1(Y) || (shadow && alg1_joseph.update(Y) != Status::ok))
       throw SimError("drag-free: Algorithm 1 update failed at t = " + format_number(t) + " s");
     // 3. control from Algorithm 1's posterior and Algorithm 2's predicted f̂
-    const Vec3 F_hat(alg2[0].state()(2), alg2[1].state()(2), alg2[2].state()(2));
-    DragFreeActuation act;
-    const Status cs = adrc.step(DragFreeAdrcInput{alg1.state(), F_hat, phi_cmd}, act);
-    u = act.stacked();
+    const Status cs = flight->control(phi_cmd, u);
     if (!usable(cs)) ++nonok;
     cmd_max = std::max(cmd_max, u.cwiseAbs().maxCoeff());
     // 4. actuator noise, accelerometer (includes u_k and w_k, eq. (13)), saturation
@@ -407,31 +470,33 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
       const double yc = saturate_accelerometer(c.plant, y);
       saturated += (yc != y);
       // 5. Algorithm 2 updates with (y_c, u_F)
-      if (!usable(alg2[j].update(yc, u(3 + j))) || !usable(alg2_alone[j].update(yc, u(3 + j))) ||
-          (shadow && !usable(alg2_joseph[j].update(yc, u(3 + j)))))
+      if (!flight->update_alg2(j, yc, u(3 + j)) || (shadow && !usable(alg2_joseph[j].update(yc, u(3 + j)))))
         throw SimError("drag-free: Algorithm 2 update failed at t = " + format_number(t) + " s");
       // 6. fusion
-      if (fuse_axis(alg1, alg2[j], j, fmode) != Status::ok ||
+      if (flight->fuse(j, fmode) != Status::ok ||
           (shadow && fuse_axis(alg1_joseph, alg2_joseph[j], j, fmode) != Status::ok))
         throw SimError("drag-free: fusion failed");
     }
+    // the flight side's estimates after the sample's updates, in double
+    const Vec<27> x1 = flight->alg1_state(), x1_alone = flight->alg1_alone_state();
+    const Vec3 x2_alone = flight->alg2_alone_state(0);
     if (shadow) {
       joseph_scale = joseph_scale.cwiseMax(alg1_joseph.state().cwiseAbs());
       Vec<27>& joseph_diff = t < kJosephTransient_s ? joseph_diff_early : joseph_diff_late;
-      joseph_diff = joseph_diff.cwiseMax((alg1.state() - alg1_joseph.state()).cwiseAbs());
+      joseph_diff = joseph_diff.cwiseMax((x1 - alg1_joseph.state()).cwiseAbs());
     }
     // metrics at t_k (estimates after the sample's updates, truth X_k)
     const int wdx = window(t);
     if (wdx >= 0) {
-      e_r2[wdx].push_back(alg2_alone[0].state()(0) - X(Ix::r));
-      e_r1[wdx].push_back(alg1_alone.state()(Ix::r) - X(Ix::r));
-      e_f1[wdx].push_back(alg1_alone.state()(Ix::F_Dsc) - X(Ix::F_Dsc));
-      e_f2[wdx].push_back(alg2_alone[0].state()(2) - X(Ix::F_Dsc));
+      e_r2[wdx].push_back(x2_alone(0) - X(Ix::r));
+      e_r1[wdx].push_back(x1_alone(Ix::r) - X(Ix::r));
+      e_f1[wdx].push_back(x1_alone(Ix::F_Dsc) - X(Ix::F_Dsc));
+      e_f2[wdx].push_back(x2_alone(2) - X(Ix::F_Dsc));
     }
     if (t >= 100.0) {
-      f_err_fused.push_back(alg1.state()(Ix::F_Dsc) - X(Ix::F_Dsc));
-      f_err_1.push_back(alg1_alone.state()(Ix::F_Dsc) - X(Ix::F_Dsc));
-      f_err_2.push_back(alg2_alone[0].state()(2) - X(Ix::F_Dsc));
+      f_err_fused.push_back(x1(Ix::F_Dsc) - X(Ix::F_Dsc));
+      f_err_1.push_back(x1_alone(Ix::F_Dsc) - X(Ix::F_Dsc));
+      f_err_2.push_back(x2_alone(2) - X(Ix::F_Dsc));
     }
     if (t >= 1000.0) {
       rx_max = std::max(rx_max, std::abs(X(Ix::r)));
@@ -468,12 +533,12 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
       for (int j = 0; j < 3; ++j) row.push_back(X(Ix::r + j));
       for (int j = 0; j < 3; ++j) row.push_back(X(Ix::phi_rel + j));
       row.push_back(X(Ix::F_Dsc));
-      row.push_back(alg1.state()(Ix::F_Dsc));
-      row.push_back(alg1_alone.state()(Ix::F_Dsc));
-      row.push_back(alg2_alone[0].state()(2));
-      row.push_back(alg1_alone.state()(Ix::r) - X(Ix::r));
-      row.push_back(alg2_alone[0].state()(0) - X(Ix::r));
-      row.push_back(alg1.state()(Ix::r) - X(Ix::r));
+      row.push_back(x1(Ix::F_Dsc));
+      row.push_back(x1_alone(Ix::F_Dsc));
+      row.push_back(x2_alone(2));
+      row.push_back(x1_alone(Ix::r) - X(Ix::r));
+      row.push_back(x2_alone(0) - X(Ix::r));
+      row.push_back(x1(Ix::r) - X(Ix::r));
       for (int i = 0; i < 9; ++i) row.push_back(u(i));
       row.push_back(atm(0));
       if (k == n) csv->record_final(row.data()); else csv->record(row.data());
@@ -485,7 +550,7 @@ LoopOutcome run_closed_loop(const ParamSet& p, const RunContext& ctx, Kind kind,
     u_prev = u;
   }
   if (csv) csv->close();
-  projections = alg1.psd_projections();
+  projections = flight->psd_projections();
   // max over states of (max_t |x_UD,i − x_Joseph,i|) / max_t |x_Joseph,i|
   auto rel_to_joseph = [&](const Vec<27>& d) {
     double worst = 0.0;
@@ -822,9 +887,9 @@ class DragFreeScenario final : public Scenario {
   }
   void declare(ParamSet& p) const override {
     declare_common(p, kind_);
-    // Issue 19: seed 004's estimators and ADRC are not scalar-generic yet, so `scalar` takes
-    // double only: a float request is refused by name, never run in double silently.
-    declare_scalar_double_only(p, kDragFreeDoubleOnly);
+    // Issue 19: Algorithms 1-3 and the ADRC in float (DragFreeFlightT<float>); the plant, the
+    // sensors and the metrics stay double.
+    declare_scalar(p);
     if (kind_ == Kind::estimators) {
       p.name("start", "unsaturated", {"unsaturated", "zero"}, "spec B.9-1 [A]: t0 = (pi/2)/omega_d");
       p.name("r_source", "alg1", {"alg1", "truth"}, "spec B.9-1: r, rdot from Algorithm 1 (truth = the proxy)");
@@ -835,7 +900,8 @@ class DragFreeScenario final : public Scenario {
     }
   }
   RunResult run(const ParamSet& p, const RunContext& ctx) const override {
-    if (kind_ == Kind::estimators) return run_estimators(p, ctx);
+    if (kind_ == Kind::estimators)
+      return p.get_name("scalar") == "float" ? run_estimators<float>(p, ctx) : run_estimators<double>(p, ctx);
     if (kind_ == Kind::adrc) {
       RunResult r = run_closed_loop(p, ctx, kind_, DragFreeXLaw::nlpid).result;
       loop_response(p, r);

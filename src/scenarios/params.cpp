@@ -526,8 +526,4 @@ void declare_scalar(ParamSet& p) {
   p.name("scalar", "double", {"double", "float"}, kScalarHelp);
 }
 
-void declare_scalar_double_only(ParamSet& p, const std::string& why) {
-  p.name("scalar", "double", {"double"}, std::string(kScalarHelp) + "; double only here: " + why);
-}
-
 }  // namespace adcs::sim

@@ -153,11 +153,6 @@ class ParamSet {
 //! run in; the plant stays double under CVODE. Scenarios whose parameters are a bound struct
 //! (param_binding.hpp) declare the same name with kScalarHelp.
 void declare_scalar(ParamSet& p);
-//! The same name for a scenario whose flight components exist in double only: `--set
-//! scalar=float` is refused with the allowed values and `why` in the parameter's help.
-void declare_scalar_double_only(ParamSet& p, const std::string& why);
-inline constexpr const char* kDragFreeDoubleOnly =
-    "seed 004's filters, fusion and ADRC are not scalar-generic yet (issue 19)";
 inline constexpr const char* kScalarHelp =
     "scalar of the flight components (law, steering, allocation); the plant integrates in double";
 

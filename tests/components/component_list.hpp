@@ -431,6 +431,52 @@ template <>
 inline constexpr bool kRejectionKeepsState<DragFreeEskfT<float>> = false;
 
 template <>
+struct ComponentFixture<SaturatedEsfT<float>> {
+  static constexpr const char* name = "SaturatedEsff";
+  using C = SaturatedEsfT<float>;
+  using D = ComponentFixture<SaturatedEsf>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) {
+    const SaturatedEsf::Input d = D::input(k);
+    return C::Input{narrow_scalar<float>(d.u_prev), narrow_scalar<float>(d.delta_f_nominal),
+                    narrow_scalar<float>(d.y_c_m_s2), narrow_scalar<float>(d.u)};
+  }
+  static void poison(C::Input& in) { in.u_prev = kNaNf; }
+};
+template <>
+inline constexpr bool kRejectionKeepsState<SaturatedEsfT<float>> = false;
+
+template <>
+struct ComponentFixture<DragFreeAdrcT<float>> {
+  static constexpr const char* name = "DragFreeAdrcf";
+  using C = DragFreeAdrcT<float>;
+  using D = ComponentFixture<DragFreeAdrc>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) {
+    const DragFreeAdrc::Input d = D::input(k);
+    C::Input in;
+    in.x_hat = scalar_cast<float>(d.x_hat);
+    in.F_D_hat_N = scalar_cast<float>(d.F_D_hat_N);
+    in.phi_sc_cmd_rad = scalar_cast<float>(d.phi_sc_cmd_rad);
+    return in;
+  }
+  static void poison(C::Input& in) { in.x_hat(DragFreeIndex::r) = kNaNf; }
+};
+
+template <>
+struct ComponentFixture<Pid<3, float>> {
+  static constexpr const char* name = "Pid3f";
+  using C = Pid<3, float>;
+  using D = ComponentFixture<Pid<3>>;
+  static C::Params params() { return D::params().cast<float>(); }
+  static C::Input input(int k) {
+    const Pid<3>::Input d = D::input(k);
+    return C::Input{scalar_cast<float>(d.e_p), scalar_cast<float>(d.e_d)};
+  }
+  static void poison(C::Input& in) { in.e_d(1) = kNaNf; }
+};
+
+template <>
 struct ComponentFixture<VscmgSteering<4, 0>> {
   static constexpr const char* name = "VscmgSteering40";
   using C = VscmgSteering<4, 0>;
@@ -466,12 +512,14 @@ template <int M, int N, class S>
 int output_values(const VscmgRates<M, N, S>& o, double* d) { return put_values(o.stacked(), d); }
 template <int N, class S>
 int output_values(const WheelTorques<N, S>& o, double* d) { return put_values(o.u_s_Nm, d); }
-template <int N>
-int output_values(const PidOutput<N>& o, double* d) { return put_values(o.u, d); }
+template <int N, class S>
+int output_values(const PidOutput<N, S>& o, double* d) { return put_values(o.u, d); }
 template <int N, class S>
 int output_values(const EskfOutput<N, S>& o, double* d) { return put_values(o.x_hat, d); }
-inline int output_values(const SaturatedEsfOutput& o, double* d) { return put_values(o.x_hat, d); }
-inline int output_values(const DragFreeActuation& o, double* d) { return put_values(o.stacked(), d); }
+template <class S>
+int output_values(const SaturatedEsfOutputT<S>& o, double* d) { return put_values(o.x_hat, d); }
+template <class S>
+int output_values(const DragFreeActuationT<S>& o, double* d) { return put_values(o.stacked(), d); }
 template <int L, class S>
 int output_values(const Vec<L, S>& o, double* d) { return put_values(o, d); }
 
@@ -501,7 +549,8 @@ using FlightComponentList = std::tuple<MrpPd<4>, HybridAdaptive<4, 3>, PpcNeural
                      SaturatedQuantizer<6>, VscmgSteering<4, 0>, EsoAdrcAttitude, MrpPd<4, float>,
                      RwTorqueAllocator<4, float>, PpcNeuralT<float>, HybridAdaptive<4, 3, float>,
                      AdaptiveTrackingT<float>, EsoAdrcAttitudeT<float>, PrescribedTimeSe3T<float>,
-                     FtsmcSe3T<float>, Saturation<6, float>, SaturatedQuantizer<6, float>, DragFreeEskfT<float>>;
+                     FtsmcSe3T<float>, Saturation<6, float>, SaturatedQuantizer<6, float>, DragFreeEskfT<float>,
+                     SaturatedEsfT<float>, DragFreeAdrcT<float>, Pid<3, float>>;
 
 //! Calls f(static_cast<C*>(nullptr)) for every component type C of the list, in order
 //! (components are not default constructible, so the type travels as a null pointer).

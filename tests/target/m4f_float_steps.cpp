@@ -1,11 +1,13 @@
-// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-003, seed
-// 004's U-D Algorithm 1 (and the
-// ESO-based ADRC flown on seed 002's vehicle) compiled for a
-// single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard) with
-// -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py then walks the call
-// graph of this object from the adcs_m4f_* entry points and fails if any software-double helper
-// (__aeabi_d*, __aeabi_*2d) or double libm function (sin, cos, sqrt, atan, ...) is reachable: on
-// this FPU a single double operation is a ~60-cycle library call.
+// Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-004
+// that have no float C family (seed 002's and seed 003's baselines, the ESO-based ADRC flown on
+// seed 002's vehicle, seed 003's actuation stage, seed 004's U-D kernels, Algorithms 1 and 2, its
+// ADRC and PID) compiled for a single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16
+// -mfloat-abi=hard) with -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py
+// then walks the call graph of this object from the adcs_m4f_* entry points and fails if any
+// software-double helper (__aeabi_d*, __aeabi_*2d) or double libm function (sin, cos, sqrt, atan,
+// ...) is reachable: on this FPU a single double operation is a ~60-cycle library call. The laws
+// with a float C family are walked in the cross C library (target_m4f_c_api_no_double); every float
+// class is in the clang whole-class check (ADCS_M4F_WHOLE_CLASS).
 #include <new>
 
 #include "adcs/actuator/quantizer.hpp"
@@ -18,48 +20,52 @@
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/control/prescribed_time_se3.hpp"
 #include "adcs/estimate/drag_free_eskf.hpp"
+#include "adcs/estimate/saturated_esf.hpp"
+#include "adcs/control/adrc.hpp"
 #include "adcs/math/sparse_rows.hpp"
 #include "adcs/math/ud.hpp"
 
 namespace adcs {
+// The laws with a float C family (src/c: MRP PD, the wheel allocation, seed 002's PPATC, seed 001,
+// seed 003's BsPdTC) are compiled to code for this FPU once, in the cross C library
+// (tests/target/CMakeLists.txt, adcs_c_target), and ctest target_m4f_c_api_no_double walks their
+// init and step entry points there. Here they are in the clang whole-class check only (every
+// member, -Wdouble-promotion -Wfloat-conversion -Werror): compiled to code in this unit as well,
+// they were ~25 arm-none-eabi-g++ CPU-s of a second copy (docs/DECISIONS.md, "CI under 20
+// minutes", item 27).
+#ifdef ADCS_M4F_WHOLE_CLASS
 template class MrpPd<4, float>;
 template class RwTorqueAllocator<4, float>;
-// Seed 002: both Euler-angle tracking laws (their constructors are float too: an LLT of J).
 template class PpcNeuralT<float>;
+template class PrescribedTimeSe3T<float>;
+// Seed 001: its constructor runs the design in double on purpose (pole placement, Lyapunov solve:
+// software double once at start-up); the C family builds the law from ground-designed gains.
+template class HybridAdaptive<4, 3, float>;
+#endif
+// Seed 002's baseline (its constructor is float too: an LLT of J).
 template class AdaptiveTrackingT<float>;
 // Seed 002's vehicle with the ESO-based ADRC (the cross pairing): its constructor forms the
 // observer gains in float (expf), so it is checked too.
 template class EsoAdrcAttitudeT<float>;
-// Seed 003: both SE(3) laws, constructors included (an LDLT of J0 and two powf for S's l1, l2).
-template class PrescribedTimeSe3T<float>;
+// Seed 003's baseline, constructor included (an LDLT of J0 and two powf for S's l1, l2).
 template class FtsmcSe3T<float>;
 // Seed 003's actuation stage (sat -> Q), constructor included (powf/logf of the level table).
 template class SaturatedQuantizer<6, float>;
-// Seed 001: the run-time members only. Its constructor runs the design in double on purpose
-// (pole placement, Lyapunov solve: software double once at start-up); compiled to code here it
-// cost ~70 arm-none-eabi-g++ CPU-s. The whole class, constructor included, is compiled with
-// -Wdouble-promotion -Wfloat-conversion -Werror by clang -fsyntax-only (ADCS_M4F_WHOLE_CLASS,
-// cmake/TargetCheck.cmake).
-#ifdef ADCS_M4F_WHOLE_CLASS
-template class HybridAdaptive<4, 3, float>;
-#else
-template Status HybridAdaptive<4, 3, float>::step(const Input&, Output&, Diagnostics*) noexcept;
-template Status HybridAdaptive<4, 3, float>::set_available(ActuatorMask) noexcept;
-template Status HybridAdaptive<4, 3, float>::set_estimates(const Vec<3, float>&, const Mat<6, 4, float>&,
-                                                           const Mat<3, 3, float>&) noexcept;
-template void HybridAdaptive<4, 3, float>::reset() noexcept;
-#endif
+// Seed 004's Algorithm 2 (one accelerometer axis), constructor included (an LDLT of P_0): its
+// truncated-normal moments in float (erfcf, expf, sqrtf).
+template class SaturatedEsfT<float>;
+// Seed 004's ADRC (Han's fal: powf) with the Fig. 9 PID inside, constructor included.
+template class DragFreeAdrcT<float>;
+template class Pid<3, float>;
 }  // namespace adcs
 
-using PdF = adcs::MrpPd<4, float>;
-using AllocF = adcs::RwTorqueAllocator<4, float>;
-using HybridF = adcs::HybridAdaptive<4, 3, float>;
-using PpcF = adcs::PpcNeuralT<float>;
 using AtcF = adcs::AdaptiveTrackingT<float>;
 using EsoF = adcs::EsoAdrcAttitudeT<float>;
-using PtcF = adcs::PrescribedTimeSe3T<float>;
 using FtsF = adcs::FtsmcSe3T<float>;
 using SatQF = adcs::SaturatedQuantizer<6, float>;
+using EsfF = adcs::SaturatedEsfT<float>;
+using AdrcF = adcs::DragFreeAdrcT<float>;
+using PidF = adcs::Pid<3, float>;
 // Seed 004's U-D kernels (math/ud.hpp, math/sparse_rows.hpp) at the attitude block's size (18
 // states, 12 noise columns): the first part of seed 004 in float; its filters are still double.
 using UdF = adcs::UdFactors<18, float>;
@@ -69,18 +75,6 @@ using SparseF = adcs::SparseRows<18, 18, float>;
 using EskfF = adcs::DragFreeEskfT<float>;
 
 // The step paths, each behind a C entry point (the roots of the call-graph check).
-extern "C" int adcs_m4f_mrp_pd_step(PdF* c, const PdF::Input* in, PdF::Output* out) {
-  return static_cast<int>(c->step(*in, *out));
-}
-extern "C" int adcs_m4f_rw_allocation_step(const AllocF* a, const AllocF::Input* in, AllocF::Output* out) {
-  return static_cast<int>(a->step(*in, *out));
-}
-extern "C" int adcs_m4f_hybrid_adaptive_step(HybridF* c, const HybridF::Input* in, HybridF::Output* out) {
-  return static_cast<int>(c->step(*in, *out));
-}
-extern "C" int adcs_m4f_ppc_neural_step(PpcF* c, const PpcF::Input* in, PpcF::Output* out) {
-  return static_cast<int>(c->step(*in, *out));
-}
 extern "C" int adcs_m4f_adaptive_tracking_step(AtcF* c, const AtcF::Input* in, AtcF::Output* out) {
   return static_cast<int>(c->step(*in, *out));
 }
@@ -88,10 +82,6 @@ extern "C" int adcs_m4f_eso_adrc_attitude_step(EsoF* c, const EsoF::Input* in, E
   return static_cast<int>(c->step(*in, *out));
 }
 extern "C" void adcs_m4f_eso_adrc_attitude_init(EsoF* c, const EsoF::Params* p) { ::new (static_cast<void*>(c)) EsoF(*p); }
-extern "C" int adcs_m4f_prescribed_time_se3_step(PtcF* c, const PtcF::Input* in, PtcF::Output* out) {
-  return static_cast<int>(c->step(*in, *out));
-}
-extern "C" void adcs_m4f_prescribed_time_se3_init(PtcF* c, const PtcF::Params* p) { ::new (static_cast<void*>(c)) PtcF(*p); }
 extern "C" int adcs_m4f_ftsmc_se3_step(FtsF* c, const FtsF::Input* in, FtsF::Output* out) {
   return static_cast<int>(c->step(*in, *out));
 }
@@ -100,6 +90,17 @@ extern "C" int adcs_m4f_saturated_quantizer_step(SatQF* c, const SatQF::Input* i
   return static_cast<int>(c->step(*in, *out));
 }
 extern "C" void adcs_m4f_saturated_quantizer_init(SatQF* c, const SatQF::Params* p) { ::new (static_cast<void*>(c)) SatQF(*p); }
+extern "C" int adcs_m4f_saturated_esf_step(EsfF* f, const EsfF::Input* in, EsfF::Output* out) {
+  return static_cast<int>(f->step(*in, *out));
+}
+extern "C" void adcs_m4f_saturated_esf_init(EsfF* f, const EsfF::Params* p) { ::new (static_cast<void*>(f)) EsfF(*p); }
+extern "C" int adcs_m4f_drag_free_adrc_step(AdrcF* c, const AdrcF::Input* in, AdrcF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
+extern "C" void adcs_m4f_drag_free_adrc_init(AdrcF* c, const AdrcF::Params* p) { ::new (static_cast<void*>(c)) AdrcF(*p); }
+extern "C" int adcs_m4f_pid_step(PidF* c, const PidF::Input* in, PidF::Output* out) {
+  return static_cast<int>(c->step(*in, *out));
+}
 extern "C" int adcs_m4f_ud_factorize(const adcs::Mat<18, 18, float>* P, UdF* out) {
   return adcs::ud_factorize(*P, *out) ? 1 : 0;
 }

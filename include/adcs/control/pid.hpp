@@ -15,41 +15,56 @@ namespace adcs {
 //! Gains are finite and >= 0: the errors carry the sign (e = command − state), so a negative gain
 //! would be positive feedback. K_P has no default (NaN until set: refused); K_I = K_D = 0 switch
 //! their terms off (seed 004 Fig. 9's PID runs with K_I = 0); h = 0.1 s is seed 004 §4's period.
-template <int N>
+//! S is the scalar the PID computes in (issue 19).
+template <int N, class S = double>
 struct PidParams {
-  Vec<N> kp = Vec<N>::Constant(kUnset);  //!< proportional gains, no default
-  Vec<N> ki = Vec<N>::Zero();  //!< integral gains (per unit·s); 0: no integral term
-  Vec<N> kd = Vec<N>::Zero();  //!< derivative gains; 0: no derivative term
-  double period_s = 0.1;       //!< [s] h, the integration step of e_i (seed 004 §4)
+  Vec<N, S> kp = Vec<N, S>::Constant(unset_v<S>);  //!< proportional gains, no default
+  Vec<N, S> ki = Vec<N, S>::Zero();  //!< integral gains (per unit·s); 0: no integral term
+  Vec<N, S> kd = Vec<N, S>::Zero();  //!< derivative gains; 0: no derivative term
+  S period_s = S(0.1);               //!< [s] h, the integration step of e_i (seed 004 §4)
   FailurePolicy on_failure = FailurePolicy::safe_command;  //!< after a failed sample: out = 0, or hold
+
+  //! The same parameters in the scalar T, each value rounded once (narrow_scalar).
+  template <class T>
+  PidParams<N, T> cast() const noexcept {
+    PidParams<N, T> out;
+    out.kp = scalar_cast<T>(kp);
+    out.ki = scalar_cast<T>(ki);
+    out.kd = scalar_cast<T>(kd);
+    out.period_s = narrow_scalar<T>(period_s);
+    out.on_failure = on_failure;
+    return out;
+  }
 };
 
-template <int N>
+template <int N, class S = double>
 struct PidInput {
-  Vec<N> e_p = Vec<N>::Zero();  //!< proportional error (command − state), per channel
-  Vec<N> e_d = Vec<N>::Zero();  //!< its rate (an estimate, not a difference quotient)
+  Vec<N, S> e_p = Vec<N, S>::Zero();  //!< proportional error (command − state), per channel
+  Vec<N, S> e_d = Vec<N, S>::Zero();  //!< its rate (an estimate, not a difference quotient)
 };
 
-template <int N>
+template <int N, class S = double>
 struct PidOutput {
-  Vec<N> u = Vec<N>::Zero();  //!< K_P e_p + K_I e_i + K_D e_d, per channel
+  Vec<N, S> u = Vec<N, S>::Zero();  //!< K_P e_p + K_I e_i + K_D e_d, per channel
 };
 
 //! The integral after the sample.
-template <int N>
+template <int N, class S = double>
 struct PidDiagnostics {
-  Vec<N> e_i = Vec<N>::Zero();  //!< h Σ e_p
+  Vec<N, S> e_i = Vec<N, S>::Zero();  //!< h Σ e_p
 };
 
-template <int N>
+template <int N, class S = double>
 class Pid {
  public:
-  using Params = PidParams<N>;
-  using Input = PidInput<N>;
-  using Output = PidOutput<N>;
-  using Diagnostics = PidDiagnostics<N>;
+  using Scalar = S;
+  using Params = PidParams<N, S>;
+  using Input = PidInput<N, S>;
+  using Output = PidOutput<N, S>;
+  using Diagnostics = PidDiagnostics<N, S>;
+  using VecN = Vec<N, S>;
 
-  explicit Pid(const PidParams<N>& p) noexcept : p_(p) {
+  explicit Pid(const Params& p) noexcept : p_(p) {
     const bool ok = finite_nonnegative(p_.kp) && finite_nonnegative(p_.ki) && finite_nonnegative(p_.kd) &&
                     finite_positive(p_.period_s);
     status_ = ok ? Status::ok : Status::invalid_parameter;
@@ -57,20 +72,20 @@ class Pid {
   //! ok, or invalid_parameter: a gain not finite or < 0 (K_P unset), h not finite or not > 0.
   //! A refused PID answers invalid_parameter from every step() with its failure command.
   Status status() const noexcept { return status_; }
-  double period_s() const noexcept { return p_.period_s; }
+  S period_s() const noexcept { return p_.period_s; }
   void reset() noexcept {
     e_i_.setZero();
     last_.setZero();
   }
-  const Vec<N>& integral() const noexcept { return e_i_; }
+  const VecN& integral() const noexcept { return e_i_; }
 
   //! One sample. non_finite_input, or out_of_range (finite but absurd errors, ~1e308, whose
   //! integral or output overflows), leave the integral untouched and set `out` to the failure
   //! command (zero, or the last good output under on_failure = hold_last).
   [[nodiscard]] Status step(const Input& in, Output& out, Diagnostics* diag = nullptr) noexcept {
-    const Vec<N>& e_p = in.e_p;
-    const Vec<N>& e_d = in.e_d;
-    const Vec<N> fallback = failure_command(p_.on_failure, last_, Vec<N>(Vec<N>::Zero()));
+    const VecN& e_p = in.e_p;
+    const VecN& e_d = in.e_d;
+    const VecN fallback = failure_command(p_.on_failure, last_, VecN(VecN::Zero()));
     if (status_ != Status::ok) {
       out.u = fallback;
       return status_;
@@ -79,8 +94,8 @@ class Pid {
       out.u = fallback;
       return Status::non_finite_input;
     }
-    const Vec<N> e_i = e_i_ + p_.period_s * e_p;
-    const Vec<N> cmd = p_.kp.cwiseProduct(e_p) + p_.ki.cwiseProduct(e_i) + p_.kd.cwiseProduct(e_d);
+    const VecN e_i = e_i_ + p_.period_s * e_p;
+    const VecN cmd = p_.kp.cwiseProduct(e_p) + p_.ki.cwiseProduct(e_i) + p_.kd.cwiseProduct(e_d);
     // Commit only finite results: an Inf integral would poison every later sample.
     if (!all_finite(e_i) || !all_finite(cmd)) {
       out.u = fallback;
@@ -94,12 +109,13 @@ class Pid {
   }
 
  private:
-  PidParams<N> p_;
-  Vec<N> e_i_ = Vec<N>::Zero();
-  Vec<N> last_ = Vec<N>::Zero();
+  Params p_;
+  VecN e_i_ = VecN::Zero();
+  VecN last_ = VecN::Zero();
   Status status_ = Status::ok;
 };
 
 ADCS_ASSERT_COMPONENT(Pid<3>);
+ADCS_ASSERT_COMPONENT(Pid<3, float>);
 
 }  // namespace adcs

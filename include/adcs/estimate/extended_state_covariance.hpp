@@ -26,12 +26,13 @@ enum class ThetaPolicy {
 //! θ = 0 only when tr Q1 = 0, so Q1 = 0) and θ → ∞ (APA = 0) taken exactly, so q = 0 channels
 //! (spec §B.8: T_Dtm) never produce 0·∞. θ alone decides, so a block of a partitioned filter
 //! whose own Q1 is zero is still inflated by the θ of the whole filter (PartitionedEskf).
-template <int N>
-Mat<N, N> bounded_increment_prediction(const Mat<N, N>& APA, const Mat<N, N>& Q1, const Mat<N, N>& Q2,
-                                       double theta) noexcept {
-  if (!(theta > 0.0)) return APA + Q2;                  // no increment bound: the plain Kalman prediction
+//! Every helper of this file takes the filter's scalar S from its matrix argument (issue 19).
+template <int N, class S = double>
+Mat<N, N, S> bounded_increment_prediction(const Mat<N, N, S>& APA, const Mat<N, N, S>& Q1, const Mat<N, N, S>& Q2,
+                                          identity_t<S> theta) noexcept {
+  if (!(theta > S(0))) return APA + Q2;                 // no increment bound: the plain Kalman prediction
   if (!std::isfinite(theta)) return APA + Q1 + Q2;      // APA = 0: no inflation
-  return (1.0 + theta) * APA + (1.0 + 1.0 / theta) * Q1 + Q2;
+  return (S(1) + theta) * APA + (S(1) + S(1) / theta) * Q1 + Q2;
 }
 
 //! θ for this step: θ_k from the current A P Aᵀ, or the fixed θ*. 0 when tr Q1 = 0.
@@ -43,9 +44,9 @@ S young_weight(ThetaPolicy policy, S theta_fixed, identity_t<S> trace_APA, ident
   if (policy == ThetaPolicy::fixed_initial) return theta_fixed;
   return trace_APA > S(0) ? std::sqrt(trace_Q1 / trace_APA) : std::numeric_limits<S>::infinity();
 }
-template <int N>
-double young_weight(ThetaPolicy policy, double theta_fixed, const Mat<N, N>& APA, const Mat<N, N>& Q1) noexcept {
-  return young_weight(policy, theta_fixed, APA.trace(), Q1.trace());
+template <int N, class S = double>
+S young_weight(ThetaPolicy policy, identity_t<S> theta_fixed, const Mat<N, N, S>& APA, const Mat<N, N, S>& Q1) noexcept {
+  return young_weight<S>(policy, theta_fixed, APA.trace(), Q1.trace());
 }
 
 //! Entries below kCovarianceFlush · tr(P) are set to zero: cross-covariances that decay
@@ -53,38 +54,46 @@ double young_weight(ThetaPolicy policy, double theta_fixed, const Mat<N, N>& APA
 //! the 27-state ESKF went from 40 µs to 400 µs per step). 1e-150 of the trace is far below any
 //! meaningful correlation, so nothing observable changes.
 inline constexpr double kCovarianceFlush = 1e-150;
+//! The same floor in float: float's subnormal range starts at 1.2e-38, so 1e-150 would flush
+//! nothing; 1e-20 of the trace is still far below what float resolves of a correlation (ε² =
+//! 3.6e-15 of the trace) and keeps the entries it leaves in the normal range for tr P > 1e-18.
+template <class S>
+inline constexpr S covariance_flush_v = S(kCovarianceFlush);
+template <>
+inline constexpr float covariance_flush_v<float> = 1e-20f;
 
-//! Sets entries below kCovarianceFlush · |tr P| to zero (one vectorised pass).
-template <int N>
-void flush_negligible(Mat<N, N>& P) noexcept {
-  const double floor = kCovarianceFlush * std::abs(P.trace());
-  P = (P.array().abs() < floor).select(0.0, P);
+//! Sets entries below covariance_flush_v · |tr P| to zero (one vectorised pass).
+template <int N, class S = double>
+void flush_negligible(Mat<N, N, S>& P) noexcept {
+  const S floor = covariance_flush_v<S> * std::abs(P.trace());
+  P = (P.array().abs() < floor).select(S(0), P);
 }
 
 //! Symmetrises P and flushes negligible entries (the cheap half of keep_psd, for a sum of PSD
 //! terms such as the time update, which cannot leave the cone except by rounding).
-template <int N>
-void symmetrize_and_flush(Mat<N, N>& P) noexcept {
-  P = 0.5 * (P + P.transpose()).eval();
-  flush_negligible<N>(P);
+template <int N, class S = double>
+void symmetrize_and_flush(Mat<N, N, S>& P) noexcept {
+  P = S(0.5) * (P + P.transpose()).eval();
+  flush_negligible<N, S>(P);
 }
 
 //! True when the LDLᵀ factorisation of the symmetric P without pivoting has only positive pivots
 //! (P positive definite up to rounding; Sylvester). Square-root free and right-looking on a copy
 //! of the lower triangle: about N³/6 multiply-adds and N divisions, the cheap proof for the usual
 //! case (sqrt and divide latencies dominated the Cholesky variant at N = 18).
-template <int N>
-bool positive_pivots(const Mat<N, N>& P) noexcept {
-  Mat<N, N> L = P;
-  double* a = L.data();  // column-major: a[i + N j] = L(i, j)
+//! (S is not deduced, so an expression such as Mat3::Zero() converts; the filters name theirs.)
+template <int N, class S = double>
+bool positive_pivots(const identity_t<Mat<N, N, S>>& P) noexcept {
+  Mat<N, N, S> L = P;
+  S* a = L.data();  // column-major: a[i + N j] = L(i, j)
   for (int k = 0; k < N; ++k) {
-    const double* __restrict ck = a + N * k;
-    const double d = ck[k];
-    if (!(d > 0.0)) return false;
-    const double inv = 1.0 / d;
+    const S* __restrict ck = a + N * k;
+    const S d = ck[k];
+    if (!(d > S(0))) return false;
+    const S inv = S(1) / d;
     for (int j = k + 1; j < N; ++j) {
-      double* __restrict cj = a + N * j;  // column j != column k: no overlap
-      const double ljk = ck[j] * inv;
+      S* __restrict cj = a + N * j;  // column j != column k: no overlap
+      const S ljk = ck[j] * inv;
       for (int i = j; i < N; ++i) cj[i] -= ljk * ck[i];  // A(i,j) −= A(i,k) A(j,k) / d_k
     }
   }
@@ -98,28 +107,28 @@ bool positive_pivots(const Mat<N, N>& P) noexcept {
 //! semidefinite boundary. A P whose projection is not representable (entries near 1e308 with an
 //! eigenvalue beyond DBL_MAX, or a failed decomposition) is set to NaN, so that the callers'
 //! finiteness check refuses the step instead of committing a made-up covariance.
-template <int N>
-bool project_if_not_psd(Mat<N, N>& P) noexcept {
-  if (positive_pivots<N>(P)) return false;
-  const Eigen::LDLT<Mat<N, N>> ldlt(P);
-  if (ldlt.info() == Eigen::Success && (ldlt.vectorD().array() >= 0.0).all()) return false;
-  const Eigen::SelfAdjointEigenSolver<Mat<N, N>> es(P);
+template <int N, class S = double>
+bool project_if_not_psd(Mat<N, N, S>& P) noexcept {
+  if (positive_pivots<N, S>(P)) return false;
+  const Eigen::LDLT<Mat<N, N, S>> ldlt(P);
+  if (ldlt.info() == Eigen::Success && (ldlt.vectorD().array() >= S(0)).all()) return false;
+  const Eigen::SelfAdjointEigenSolver<Mat<N, N, S>> es(P);
   // Found by tests/fuzz: NaN/Inf eigenvalues went through cwiseMax(0) as 0 and gave P = 0.
   if (es.info() != Eigen::Success || !all_finite(es.eigenvalues())) {
-    P.setConstant(std::numeric_limits<double>::quiet_NaN());
+    P.setConstant(std::numeric_limits<S>::quiet_NaN());
     return true;
   }
-  const Vec<N> ev = es.eigenvalues().cwiseMax(0.0);
+  const Vec<N, S> ev = es.eigenvalues().cwiseMax(S(0));
   P = es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
-  P = 0.5 * (P + P.transpose()).eval();
+  P = S(0.5) * (P + P.transpose()).eval();
   return true;
 }
 
 //! Symmetrises P, flushes negligible entries and projects it onto the PSD cone when needed.
-template <int N>
-bool keep_psd(Mat<N, N>& P) noexcept {
-  symmetrize_and_flush<N>(P);
-  return project_if_not_psd<N>(P);
+template <int N, class S = double>
+bool keep_psd(Mat<N, N, S>& P) noexcept {
+  symmetrize_and_flush<N, S>(P);
+  return project_if_not_psd<N, S>(P);
 }
 
 }  // namespace adcs

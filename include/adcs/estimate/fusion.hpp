@@ -43,30 +43,36 @@ inline Mat<3, 27> fusion_selector(int axis) noexcept {
 //! changed) for a bad axis or a refused filter (status() != ok: it has no valid estimate to give
 //! or to receive).
 //! A template only so that including this header instantiates nothing (see detail::DragFreeEskf);
-//! Alg1 is DragFreeEskf and Alg2 SaturatedEsf.
+//! Alg1 is DragFreeEskfT<S> (or, in double, DragFreeEskfJoseph) and Alg2 SaturatedEsfT<S>, both in
+//! the scalar S (issue 19: Algorithm 3 in float too).
 template <class Alg1 = DragFreeEskf, class Alg2 = SaturatedEsf>
 [[nodiscard]] Status fuse_axis(Alg1& alg1, Alg2& alg2, int axis,
                                FusedCovariance mode = FusedCovariance::block_diagonal) noexcept {
-  static_assert((std::is_same_v<Alg1, DragFreeEskf> || std::is_same_v<Alg1, DragFreeEskfJoseph>) &&
-                    std::is_same_v<Alg2, SaturatedEsf>,
-                "fuse_axis: Algorithm 3 fuses the drag-free ESKF with a saturated-accelerometer filter");
+  using S = typename Alg2::Scalar;
+  static_assert((std::is_same_v<Alg1, DragFreeEskfT<S>> ||
+                 (std::is_same_v<S, double> && std::is_same_v<Alg1, DragFreeEskfJoseph>)) &&
+                    std::is_same_v<Alg2, SaturatedEsfT<S>>,
+                "fuse_axis: Algorithm 3 fuses the drag-free ESKF with a saturated-accelerometer filter "
+                "of the same scalar");
+  using Vec3s = Vec<3, S>;
+  using Mat3s = Mat<3, 3, S>;
   if (axis < 0 || axis > 2 || alg1.status() != Status::ok || alg2.status() != Status::ok)
     return Status::invalid_parameter;
   const std::array<int, 3> idx{DragFreeIndex::r + axis, DragFreeIndex::r_dot + axis, DragFreeIndex::F_Dsc + axis};
-  const Vec<27>& x1 = alg1.state();
-  const Vec3 X1(x1(idx[0]), x1(idx[1]), x1(idx[2]));         // seed 004 eq. (35)
-  const Mat3 P1s = alg1.template covariance_of<3>(idx);               // seed 004 eq. (36)
-  const Vec3& X2 = alg2.state();
-  const Mat3& P2 = alg2.covariance();
-  const Vec3 Xo(X1(0), X1(1), X2(2));                        // seed 004 eqs. (37)-(38)
-  Mat3 Po;
+  const Vec<27, S>& x1 = alg1.state();
+  const Vec3s X1(x1(idx[0]), x1(idx[1]), x1(idx[2]));        // seed 004 eq. (35)
+  const Mat3s P1s = alg1.template covariance_of<3>(idx);     // seed 004 eq. (36)
+  const Vec3s& X2 = alg2.state();
+  const Mat3s& P2 = alg2.covariance();
+  const Vec3s Xo(X1(0), X1(1), X2(2));                       // seed 004 eqs. (37)-(38)
+  Mat3s Po;
   if (mode == FusedCovariance::block_diagonal) {
     Po.setZero();
-    Po.topLeftCorner<2, 2>() = P1s.topLeftCorner<2, 2>();
+    Po.template topLeftCorner<2, 2>() = P1s.template topLeftCorner<2, 2>();
     Po(2, 2) = P2(2, 2);
   } else {
     Po << P1s.row(0), P1s.row(1), P2.row(2);                  // literal (39): not symmetric
-    keep_psd<3>(Po);
+    keep_psd<3, S>(Po);
   }
   if (!all_finite(Xo) || !all_finite(Po) || !all_finite(x1) || !all_finite(P1s)) return Status::non_finite_input;
   const Status s1 = alg1.template replace_substate<3>(idx, Xo, Po);  // seed 004 eqs. (40)-(41)

@@ -31,11 +31,14 @@
 namespace adcs {
 
 //! Moments of a standard normal truncated to [t, +inf): mean λ(t) (inverse Mills ratio) and
-//! variance v(t) = 1 + tλ − λ². The default value {0, 1} is the untruncated N(0,1).
-struct TruncatedMoments {
-  double mean = 0.0;      //!< [-] E[y | y in interval], y ~ N(0,1)
-  double variance = 1.0;  //!< [-] Var[y | y in interval]
+//! variance v(t) = 1 + tλ − λ². The default value {0, 1} is the untruncated N(0,1). The one-sided
+//! moments take the scalar (issue 19: Algorithm 2 in float); the two-sided ones are double.
+template <class S = double>
+struct TruncatedMomentsT {
+  S mean = S(0);      //!< [-] E[y | y in interval], y ~ N(0,1)
+  S variance = S(1);  //!< [-] Var[y | y in interval]
 };
+using TruncatedMoments = TruncatedMomentsT<double>;
 
 //! Below this t, Z(t) = exp(-t^2/2)/sqrt(2 pi) is about to underflow: λ = 0, v = 1, which is the
 //! exact limit in double precision (no information from the truncation). seed 004 §B.5
@@ -55,34 +58,66 @@ inline constexpr int kTruncNormalContinuedFractionDepth = 32;
 //! saturated for finite t: λ(t) = t to double precision there.
 inline constexpr double kTruncNormalVarianceFloorT = 1e150;
 
+//! The thresholds above in the scalar S. In float (issue 19) they move, for the same reasons at
+//! float's precision and range (ε = 6e-8, normal numbers from 1.2e-38, largest 3.4e38):
+//!  - no information below t = −13: Z(−13) = 7.6e-38 is float's last normal density, and
+//!    λ < 1e-36 there, so {0, 1} is exact to float precision;
+//!  - the continued fraction from t = 1.5 [D, float accuracy], for λ as well as v: in float the
+//!    cancellation of 1 + tλ − λ² cost 2.2e-4 of v at t = 3.7, and Z/Q loses ~t²/2 roundings
+//!    to the rounding of t² inside exp (5.6e-6 of λ at t = 11, measured against double); the
+//!    32-deep fraction is within 1.7e-9 of λ and 5.3e-8 of v at t = 1.5 (against double's Z/Q)
+//!    and needs neither exp nor erfc. The literal formula below 1.5 is within 5e-6 of v;
+//!  - the series above t = 12 (its truncation there is ~1e-10 in λ and ~1e-7 relative in v, x =
+//!    1/t² = 6.9e-3, about one float rounding);
+//!  - the variance held from t = 1e18, where 1/t² = 1e-36 is still normal.
+template <class S>
+struct TruncNormalLimits {
+  static constexpr S no_information_t = S(kTruncNormalNoInformationT);
+  static constexpr S continued_fraction_t = S(kTruncNormalContinuedFractionT);
+  static constexpr bool lambda_from_continued_fraction = false;  //!< double: λ = Z/Q (spec §B.5)
+  static constexpr S series_t = S(kTruncNormalSeriesT);
+  static constexpr S variance_floor_t = S(kTruncNormalVarianceFloorT);
+};
+template <>
+struct TruncNormalLimits<float> {
+  static constexpr float no_information_t = -13.0f;
+  static constexpr float continued_fraction_t = 1.5f;
+  static constexpr bool lambda_from_continued_fraction = true;
+  static constexpr float series_t = 12.0f;
+  static constexpr float variance_floor_t = 1e18f;
+};
+
 namespace detail {
 
 inline constexpr double kInvSqrt2 = 0.70710678118654752440;   // 1/sqrt(2)
 inline constexpr double kInvSqrt2Pi = 0.39894228040143267794;  // 1/sqrt(2 pi)
 
 //! Z(t) = exp(-t^2/2)/sqrt(2 pi), the standard normal density.   seed 004 §B.5
-inline double std_normal_pdf(double t) noexcept { return kInvSqrt2Pi * std::exp(-0.5 * t * t); }
+template <class S>
+S std_normal_pdf(S t) noexcept { return S(kInvSqrt2Pi) * std::exp(S(-0.5) * t * t); }
 
 //! One-sided moments plus gap = λ(t) − t (the mean excess over the truncation point), which the
 //! tail series gives without the cancellation of λ − t. Argument must not be NaN.
+template <class S = double>
 struct UpperTail {
-  double lambda;    //!< [-] λ(t)
-  double gap;       //!< [-] λ(t) − t  (>= 0; +inf for t = -inf)
-  double variance;  //!< [-] v(t)
+  S lambda;    //!< [-] λ(t)
+  S gap;       //!< [-] λ(t) − t  (>= 0; +inf for t = -inf)
+  S variance;  //!< [-] v(t)
 };
 
-inline UpperTail upper_tail(double t) noexcept {
-  if (t < kTruncNormalNoInformationT) {
-    // Z(t) underflows: λ = 0, v = 1 are the limits to double precision.   seed 004 §B.5
-    return {0.0, -t, 1.0};
+template <class S>
+UpperTail<S> upper_tail(S t) noexcept {
+  using Limits = TruncNormalLimits<S>;
+  if (t < Limits::no_information_t) {
+    // Z(t) underflows: λ = 0, v = 1 are the limits to the scalar's precision.   seed 004 §B.5
+    return {S(0), -t, S(1)};
   }
-  if (t <= kTruncNormalSeriesT) {
+  if (t <= Limits::series_t) {
     // λ = Z(t) / (0.5 erfc(t/√2)): erfc directly, never 1 − Φ.   seed 004 §B.5, seed 004 eq. (29)
-    const double z = std_normal_pdf(t);
-    const double q = 0.5 * std::erfc(t * kInvSqrt2);
-    const double lambda = z / q;
-    if (t < kTruncNormalContinuedFractionT) {
-      const double v = 1.0 + t * lambda - lambda * lambda;  // seed 004 §B.5, seed 004 eq. (30)
+    const auto mills = [t]() noexcept { return std_normal_pdf(t) / (S(0.5) * std::erfc(t * S(kInvSqrt2))); };
+    if (t < Limits::continued_fraction_t) {
+      const S lambda = mills();
+      const S v = S(1) + t * lambda - lambda * lambda;  // seed 004 §B.5, seed 004 eq. (30)
       return {lambda, lambda - t, v};
     }
     // Same v without cancellation [D, accuracy]: Laplace's continued fraction of the Mills ratio,
@@ -91,27 +126,27 @@ inline UpperTail upper_tail(double t) noexcept {
     //   v = 1 + tλ − λ² = 1 − t·gap − gap² = gap (u − gap).
     // Evaluated backward from D_N ≈ (t + sqrt(t² + 4(N+1)))/2, the fixed point of the tail.
     constexpr int kN = kTruncNormalContinuedFractionDepth;
-    double dn = 0.5 * (t + std::sqrt(t * t + 4.0 * (kN + 1)));  // D_N
-    for (int n = kN - 1; n >= 2; --n) dn = t + (n + 1) / dn;    // down to D_2
-    const double u = 2.0 / dn;
-    const double gap = 1.0 / (t + u);                             // 1/D_1
-    return {lambda, gap, gap * (u - gap)};
+    S dn = S(0.5) * (t + std::sqrt(t * t + S(4 * (kN + 1))));  // D_N
+    for (int n = kN - 1; n >= 2; --n) dn = t + S(n + 1) / dn;  // down to D_2
+    const S u = S(2) / dn;
+    const S gap = S(1) / (t + u);                               // 1/D_1
+    if constexpr (Limits::lambda_from_continued_fraction) return {t + gap, gap, gap * (u - gap)};
+    return {mills(), gap, gap * (u - gap)};
   }
   // Asymptotic series, x = 1/t^2 (seed 004 §B.5):
   //   λ = t (1 + x − 2x² + 10x³ − 74x⁴ + 706x⁵ − 8162x⁶) = t + (1/t)(1 − 2x + ... − 8162x⁵)
   //   v = x (1 − 6x + 50x² − 518x³ + 6354x⁴ − 89782x⁵)
   // written as t + gap so that the excess λ − t keeps full relative precision.
-  const double ts = t < kTruncNormalVarianceFloorT ? t : kTruncNormalVarianceFloorT;
-  const double inv = 1.0 / ts;
-  const double x = inv * inv;
-  const double v =
-      x * (1.0 + x * (-6.0 + x * (50.0 + x * (-518.0 + x * (6354.0 + x * -89782.0)))));
-  if (t >= kTruncNormalVarianceFloorT) {
-    // λ = t (1 + O(1e-300)); t = +inf (empty support) saturates at the largest double.
-    const double lambda = std::min(t, std::numeric_limits<double>::max());
-    return {lambda, 1.0 / t, v};
+  const S ts = t < Limits::variance_floor_t ? t : Limits::variance_floor_t;
+  const S inv = S(1) / ts;
+  const S x = inv * inv;
+  const S v = x * (S(1) + x * (S(-6) + x * (S(50) + x * (S(-518) + x * (S(6354) + x * S(-89782))))));
+  if (t >= Limits::variance_floor_t) {
+    // λ = t (1 + O(1/t²)); t = +inf (empty support) saturates at the scalar's largest value.
+    const S lambda = std::min(t, std::numeric_limits<S>::max());
+    return {lambda, S(1) / t, v};
   }
-  const double gap = inv * (1.0 + x * (-2.0 + x * (10.0 + x * (-74.0 + x * (706.0 + x * -8162.0)))));
+  const S gap = inv * (S(1) + x * (S(-2) + x * (S(10) + x * (S(-74) + x * (S(706) + x * S(-8162))))));
   return {t + gap, gap, v};
 }
 
@@ -175,13 +210,13 @@ inline TruncatedMoments two_sided_upper(double a, double b) noexcept {
     //   mean_in = g_a − rho d / (1 − rho),        d = (w + g_b) − g_a
     //   var_in  = (v_a − rho (v_b + d² / (1 − rho))) / (1 − rho)
     // where g = λ − t. Here kappa > 1 and a > 0 give h c > 2/3, so rho <= e^{−4/3} < 0.27.
-    const UpperTail ua = upper_tail(a);
+    const UpperTail<double> ua = upper_tail(a);
     const double r = std::exp(-w * c);  // Z(b)/Z(a) = exp(−(b² − a²)/2)
     if (r == 0.0) {  // [b, inf) carries no mass relative to [a, b] in double
       m.mean = a + ua.gap;
       m.variance = ua.variance;
     } else {
-      const UpperTail ub = upper_tail(b);
+      const UpperTail<double> ub = upper_tail(b);
       const double rho = r * (ua.lambda / ub.lambda);  // Q(b)/Q(a), since Q = Z/λ
       const double k = 1.0 / (1.0 - rho);
       const double d = (w + ub.gap) - ua.gap;  // E[y | y >= b] − E[y | y >= a] > 0
@@ -209,17 +244,21 @@ inline TruncatedMoments two_sided_upper(double a, double b) noexcept {
 //!    half an ulp of t, and λ rounds to t; mean = 0 for t < −37 as the spec prescribes);
 //!  - variance in (0, 1]: == 1 where 1 − v < 1e-16 (t < ~−8.5), held at 1e-300 for t >= 1e150;
 //!  - t = +inf (empty support) → mean = DBL_MAX, variance = 1e-300 (saturated, not inf).
-inline TruncatedMoments upper_truncated_std_normal(double t) noexcept {
+//! In float the same with TruncNormalLimits<float>: {0, 1} below −13, the series above 12, the
+//! variance held at 1e-36 from 1e18, mean = FLT_MAX at +inf.
+template <class S>
+TruncatedMomentsT<S> upper_truncated_std_normal(S t) noexcept {
   if (std::isnan(t)) return {};
-  const detail::UpperTail u = detail::upper_tail(t);
+  const detail::UpperTail<S> u = detail::upper_tail(t);
   return {u.lambda, u.variance};
 }
 
 //! Mean and variance of y ~ N(0,1) conditioned on y <= t: mean = −λ(−t), variance = v(−t)
 //! (seed 004 §B.5, saturation at the lower limit). Same limits as upper_truncated_std_normal()
 //! mirrored: t = +inf or NaN → {0, 1}; t = −inf → mean = −DBL_MAX.
-inline TruncatedMoments lower_truncated_std_normal(double t) noexcept {
-  const TruncatedMoments u = upper_truncated_std_normal(-t);
+template <class S>
+TruncatedMomentsT<S> lower_truncated_std_normal(S t) noexcept {
+  const TruncatedMomentsT<S> u = upper_truncated_std_normal(-t);
   return {-u.mean, u.variance};
 }
 

@@ -16,6 +16,7 @@
 // F_D 15-17, φ_rel 18-20, φ̇_rel 21-23, T_Dtm 24-26. Inputs u = [T_Csc; F_Csc; T_Ctm] (9).
 // Units: rad, m, N, N m, kg, kg m², s.
 #include <cmath>
+#include <type_traits>
 
 #include "adcs/core/status.hpp"
 #include "adcs/core/types.hpp"
@@ -34,36 +35,68 @@ struct DragFreeIndex {
                        phi_rel = 18, phi_rel_dot = 21, T_Dtm = 24;
 };
 
-//! Table 2 of seed 004 (every value GIVEN unless marked) and the sensor/actuator data of §4.
-struct DragFreeParams {
-  double m_tm = 1.0;                          //!< [kg] test mass
-  double m_sc = 1050.0;                       //!< [kg] spacecraft
-  Mat3 I_tm = 0.2667e-3 * Mat3::Identity();   //!< [kg m²]
-  Mat3 I_sc = (Mat3() << 200, 1, 2, 1, 2700, 1, 2, 1, 2650).finished();  //!< [kg m²]
-  Mat3 K_trans = 1e-6 * (Mat3() << 1, 0.039, 0.039, 0.039, 1, 0.039, 0.039, 0.039, 1).finished();  //!< [N/m]
-  Mat3 D_trans = 1.4e-11 * Mat3::Identity();  //!< [N s/m] (printed "N m s/rad", spec B.10 #10)
-  Mat3 K_rot = 1e-9 * (Mat3() << 1, 10, 10, 10, 1, 10, 10, 10, 1).finished();  //!< [N m/rad]
-  Mat3 D_rot = 1.4e-11 * Mat3::Identity();    //!< [N m s/rad]
-  double period_s = 0.1;                      //!< [s] h, sample and actuation period
-  double accel_min = -6e-6;                   //!< [m/s²] accelerometer range y̲
-  double accel_max = 6e-6;                    //!< [m/s²] accelerometer range ȳ
+//! Table 2 of seed 004 (every value GIVEN unless marked) and the sensor/actuator data of §4. S is
+//! the scalar of whoever reads them (issue 19): the plant, the model below and the filters'
+//! design use DragFreeParams (double); a float law (DragFreeAdrcT<float>) reads the values
+//! rounded once (cast<float>()).
+template <class S = double>
+struct DragFreeParamsT {
+  using Mat3s = Mat<3, 3, S>;
+  S m_tm = S(1.0);                                 //!< [kg] test mass
+  S m_sc = S(1050.0);                              //!< [kg] spacecraft
+  Mat3s I_tm = S(0.2667e-3) * Mat3s::Identity();   //!< [kg m²]
+  Mat3s I_sc = (Mat3s() << 200, 1, 2, 1, 2700, 1, 2, 1, 2650).finished();  //!< [kg m²]
+  Mat3s K_trans = S(1e-6) * (Mat3s() << S(1), S(0.039), S(0.039), S(0.039), S(1), S(0.039), S(0.039), S(0.039), S(1))
+                                .finished();  //!< [N/m]
+  Mat3s D_trans = S(1.4e-11) * Mat3s::Identity();  //!< [N s/m] (printed "N m s/rad", spec B.10 #10)
+  Mat3s K_rot = S(1e-9) * (Mat3s() << 1, 10, 10, 10, 1, 10, 10, 10, 1).finished();  //!< [N m/rad]
+  Mat3s D_rot = S(1.4e-11) * Mat3s::Identity();    //!< [N m s/rad]
+  S period_s = S(0.1);                             //!< [s] h, sample and actuation period
+  S accel_min = S(-6e-6);                          //!< [m/s²] accelerometer range y̲
+  S accel_max = S(6e-6);                           //!< [m/s²] accelerometer range ȳ
   // One-sided amplitude spectral densities of white noise (spec §B.3, B.10 #4):
-  double asd_T_sc = 1e-8;   //!< [N m/√Hz] w_TCsc
-  double asd_F_sc = 1e-8;   //!< [N/√Hz] w_FCsc
-  double asd_T_tm = 1e-15;  //!< [N m/√Hz] w_TCtm
-  double asd_pos = 1e-8;    //!< [m/√Hz, rad/√Hz] displacement and attitude sensors
-  double asd_acc = 1e-12;   //!< [m s⁻²/√Hz] accelerometer
+  S asd_T_sc = S(1e-8);   //!< [N m/√Hz] w_TCsc
+  S asd_F_sc = S(1e-8);   //!< [N/√Hz] w_FCsc
+  S asd_T_tm = S(1e-15);  //!< [N m/√Hz] w_TCtm
+  S asd_pos = S(1e-8);    //!< [m/√Hz, rad/√Hz] displacement and attitude sensors
+  S asd_acc = S(1e-12);   //!< [m s⁻²/√Hz] accelerometer
   bool two_sided_noise = false;  //!< spec §B.3 option: σ² = ASD²/h instead of ASD²/(2h)
+
+  //! The same parameters in the scalar T, each value rounded once (narrow_scalar).
+  template <class T>
+  DragFreeParamsT<T> cast() const noexcept {
+    DragFreeParamsT<T> o;
+    o.m_tm = narrow_scalar<T>(m_tm);
+    o.m_sc = narrow_scalar<T>(m_sc);
+    o.I_tm = scalar_cast<T>(I_tm);
+    o.I_sc = scalar_cast<T>(I_sc);
+    o.K_trans = scalar_cast<T>(K_trans);
+    o.D_trans = scalar_cast<T>(D_trans);
+    o.K_rot = scalar_cast<T>(K_rot);
+    o.D_rot = scalar_cast<T>(D_rot);
+    o.period_s = narrow_scalar<T>(period_s);
+    o.accel_min = narrow_scalar<T>(accel_min);
+    o.accel_max = narrow_scalar<T>(accel_max);
+    o.asd_T_sc = narrow_scalar<T>(asd_T_sc);
+    o.asd_F_sc = narrow_scalar<T>(asd_F_sc);
+    o.asd_T_tm = narrow_scalar<T>(asd_T_tm);
+    o.asd_pos = narrow_scalar<T>(asd_pos);
+    o.asd_acc = narrow_scalar<T>(asd_acc);
+    o.two_sided_noise = two_sided_noise;
+    return o;
+  }
 };
+using DragFreeParams = DragFreeParamsT<double>;
 
 //! True when the parameters define the model: masses finite > 0; I_tm, I_sc symmetric positive
 //! definite; K_trans, D_trans, K_rot, D_rot finite (any sign: the printed "+" on K_rot, D_rot is a
 //! negative electrostatic stiffness, spec B.10 #13); period_s (h) finite > 0; accel_min < accel_max, both
 //! finite; noise densities finite >= 0. drag_free_discretize, drag_free_axis_model and
 //! DragFreeAdrc refuse (invalid_parameter) anything else.
-inline bool valid(const DragFreeParams& p) noexcept {
-  return finite_positive(p.m_tm) && finite_positive(p.m_sc) && symmetric_positive_definite<3>(p.I_tm) &&
-         symmetric_positive_definite<3>(p.I_sc) && all_finite(p.K_trans) && all_finite(p.D_trans) &&
+template <class S>
+bool valid(const DragFreeParamsT<S>& p) noexcept {
+  return finite_positive(p.m_tm) && finite_positive(p.m_sc) && symmetric_positive_definite<3, S>(p.I_tm) &&
+         symmetric_positive_definite<3, S>(p.I_sc) && all_finite(p.K_trans) && all_finite(p.D_trans) &&
          all_finite(p.K_rot) && all_finite(p.D_rot) && finite_positive(p.period_s) && std::isfinite(p.accel_min) &&
          std::isfinite(p.accel_max) && p.accel_min < p.accel_max && finite_nonnegative(p.asd_T_sc) &&
          finite_nonnegative(p.asd_F_sc) && finite_nonnegative(p.asd_T_tm) && finite_nonnegative(p.asd_pos) &&
@@ -95,8 +128,17 @@ struct DragFreeContinuous {
   Mat<9, 27> C = Mat<9, 27>::Zero();
 };
 
+//! The model builders below are templates on the parameters' scalar only so that including this
+//! header compiles none of them (the 27-state ZOH: expm of a 36 x 36 matrix) unless called; they
+//! build the model in double, for the plant and the filters' design (a float filter gets the
+//! result rounded once, EskfParams::cast).
+template <class S>
+inline constexpr bool kDragFreeModelInDouble = std::is_same_v<S, double>;
+
 //! A, B, B_e, C of seed 004 eq. (6) from (4) with f moved into the state (block indices 0..8 of 3 x 3).
-inline DragFreeContinuous drag_free_continuous(const DragFreeParams& p) noexcept {
+template <class S = double>
+DragFreeContinuous drag_free_continuous(const DragFreeParamsT<S>& p) noexcept {
+  static_assert(kDragFreeModelInDouble<S>, "the drag-free model is built in double (cast the result)");
   DragFreeContinuous m;
   const Mat3 I = Mat3::Identity();
   const Mat3 Isc_inv = p.I_sc.inverse(), Itm_inv = p.I_tm.inverse();
@@ -132,7 +174,9 @@ struct DragFreeDiscrete {
 };
 
 //! invalid_parameter (out untouched) unless valid(p).
-[[nodiscard]] inline Status drag_free_discretize(const DragFreeParams& p, DragFreeDiscrete& out) noexcept {
+template <class S = double>
+[[nodiscard]] Status drag_free_discretize(const DragFreeParamsT<S>& p, DragFreeDiscrete& out) noexcept {
+  static_assert(kDragFreeModelInDouble<S>, "the drag-free model is built in double (cast the result)");
   if (!valid(p)) return Status::invalid_parameter;
   const DragFreeContinuous c = drag_free_continuous(p);
   DragFreeDiscrete d;
@@ -155,7 +199,9 @@ struct DragFreeAxisModel {
 };
 
 //! invalid_parameter (out untouched) for an axis outside 0..2 or unless valid(p).
-[[nodiscard]] inline Status drag_free_axis_model(const DragFreeParams& p, int axis, DragFreeAxisModel& out) noexcept {
+template <class S = double>
+[[nodiscard]] Status drag_free_axis_model(const DragFreeParamsT<S>& p, int axis, DragFreeAxisModel& out) noexcept {
+  static_assert(kDragFreeModelInDouble<S>, "the drag-free model is built in double (cast the result)");
   if (axis < 0 || axis > 2 || !valid(p)) return Status::invalid_parameter;
   const double K = p.K_trans(axis, axis), D = p.D_trans(axis, axis);
   Mat3 A = Mat3::Zero();  // seed 004 eq. (12): [[A_o, B_o],[0, 0]]
