@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# "Run the tests" (README command 2; .ci/run calls exactly this). About 25-33 minutes on 2 cores (over the 20-minute budget; README)
+# "Run the tests" (README command 2; .ci/run calls exactly this). About 25-35 minutes on 2 cores (over the 20-minute budget; README)
 # from a fresh clone with the packages installed (the table at the end gives each phase; README
 # has the measured figure).
 #   1. install missing Debian packages (tools/setup-deps.sh);
