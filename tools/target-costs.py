@@ -54,13 +54,16 @@ SYSTEMS_M4F = {
     "se3_f": "seed 003 BsPdTC PrescribedTimeSe3T<float>, Cortex-M4F: row conversion (double rows to float: "
              "library calls), one step() (control/prescribed_time_se3.hpp); the desired state and sat -> Q "
              "stay with the double ground code, as in se3-ptc --set scalar=float",
+    "dragfree_f": "seed 004 one 0.1 s sample in float, Cortex-M4F: DragFreeEskfT<float> + 3 SaturatedEsfT<float> "
+                  "predict/update, DragFreeAdrcT<float> step(), 3 x fuse_axis; each reading converted to float "
+                  "(library calls) in the stage that reads it (estimate/*.hpp, control/adrc.hpp)",
 }
 GOAL = 10000  # instructions per step (issue 7)
 # The stage that is the controller's own step() in Systems whose step() has more (the rest are
 # the desired state, quantisation, or estimators).
 CONTROLLER_STAGE = {"se3": "controller_step", "dragfree": "adrc_step", "attitude": "mrp_pd_step",
                     "attitude_f": "mrp_pd_step", "ppc": "ppc_step", "ppc_f": "ppc_step",
-                    "hybrid_f": "hybrid_step", "se3_f": "controller_step"}
+                    "hybrid_f": "hybrid_step", "se3_f": "controller_step", "dragfree_f": "adrc_step"}
 QEMU_ARGS = ["-nographic", "-monitor", "none", "-serial", "none",
              "-semihosting-config", "enable=on,target=native", "-icount", "shift=0"]
 

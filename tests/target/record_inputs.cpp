@@ -3,7 +3,8 @@
 // input of every step as a C++ header of hex-float literals (exact): replay_inputs_<name>.hpp in
 // the build tree. Usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>
 // Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
-// (hybrid_f, ppc_f, se3_f, attitude and attitude_f too: record_inputs <hybrid_f|ppc_f|se3_f|attitude|attitude_f> <out.hpp> <steps>.)
+// (hybrid_f, ppc_f, se3_f, dragfree_f, attitude and attitude_f too: record_inputs
+// <hybrid_f|ppc_f|se3_f|dragfree_f|attitude|attitude_f> <out.hpp> <steps>.)
 //
 // The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
 // scenarios offer; the plant wrappers are the scenarios' own (src/scenarios/truth_plants.hpp),
@@ -13,7 +14,8 @@
 //   ppc, ppc_f  flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s; each
 //            System closes its own loop (ppc_f: the float law)
 //   se3      chaser + target on SE(3), state 1, disturbance, RK4 at h/10 (integrator=rk4)
-//   dragfree the 27-state exact ZOH truth with seeded noise (run seed 0 -> streams of seed 1)
+//   dragfree, dragfree_f  the 27-state exact ZOH truth with seeded noise (run seed 0 -> streams
+//            of seed 1); each System closes its own loop (dragfree_f: the float flight code)
 //   attitude, attitude_f  the cubesat of examples/cubesat_mrp_pd.cpp (RigidBodyRw<4>), 10 RK4
 //            steps per 0.1 s period, through its 30 deg slew; each System closes its own loop
 //            (the float law's commands differ from the double one's)
@@ -248,8 +250,7 @@ Rows record_se3_f(int steps) {
 }
 
 // ------------------------------------------------------------------------------ seed 004
-Rows record_dragfree(int steps) {
-  const replay::Api& sys = replay::kDragFree;
+Rows record_dragfree(const replay::Api& sys, int steps) {
   if (sys.init_status() != Status::ok || sys.parts != 2) fail("drag-free filters/controller rejected");
   DragFreeParams d;  // Table 2 defaults, as the System's
   d.period_s = sys.period_s;
@@ -367,7 +368,7 @@ void write_header(const char* path, const char* name, const char* what, const Ro
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) fail("usage: record_inputs <hybrid|hybrid_f|ppc|ppc_f|se3|se3_f|dragfree|attitude|attitude_f> <out.hpp> <steps>");
+  if (argc != 4) fail("usage: record_inputs <hybrid|hybrid_f|ppc|ppc_f|se3|se3_f|dragfree|dragfree_f|attitude|attitude_f> <out.hpp> <steps>");
   const std::string name = argv[1];
   const int steps = std::atoi(argv[3]);
   if (steps < 1) fail("steps must be >= 1");
@@ -393,8 +394,11 @@ int main(int argc, char** argv) {
       rows = record_se3_f(steps);
       what = "seed 003 se3-ptc closed loop (state 1, float law), 8 Hz";
     } else if (name == "dragfree") {
-      rows = record_dragfree(steps);
+      rows = record_dragfree(replay::kDragFree, steps);
       what = "seed 004 dragfree-adrc closed loop, h = 0.1 s";
+    } else if (name == "dragfree_f") {
+      rows = record_dragfree(replay::kDragFreeF, steps);
+      what = "seed 004 dragfree-adrc closed loop (float flight code), h = 0.1 s";
     } else if (name == "attitude") {
       rows = record_attitude(replay::kAttitude, steps);
       what = "cubesat MRP PD + wheel allocation closed loop (double), 10 Hz";

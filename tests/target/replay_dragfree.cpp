@@ -5,7 +5,7 @@
 #include "replay_runtime.hpp"
 
 namespace {
-replay::DragFreeSystem g_system;  // static storage: its bytes show in the ELF's .bss
+replay::DragFreeSystem<double> g_system;  // static storage: its bytes show in the ELF's .bss
 }
 
-const replay::Api replay::kDragFree = replay::ApiOf<replay::DragFreeSystem, &g_system>::make();
+const replay::Api replay::kDragFree = replay::ApiOf<replay::DragFreeSystem<double>, &g_system>::make();

@@ -11,18 +11,31 @@
 // two halves (step_a: 1-3, step_b: 4-5); step() is both, and is what the replay and the cost
 // measure. Cost stages (replay_system.hpp): predict (1), eskf_update (2), adrc_step (3),
 // esf_update_fuse (4-5). Filter parameters as DragFreeConfig::eskf()/esf() of the scenario.
+// The discrete model comes from the table designed on the host (replay_model_dragfree.hpp, written
+// by design_dragfree_model.cpp), so no board compiles the 27-state matrix exponential.
+// S = double is the Cortex-M7 System "dragfree", S = float the Cortex-M4F System "dragfree_f"
+// (issue 19: as dragfree-adrc --set scalar=float, the parameters are the double ones rounded once,
+// EskfParams/SaturatedEsfParams/DragFreeAdrcParams::cast, and each reading is converted to float
+// where its stage reads it, as a sensor interface would hand it over; the conversions, library
+// calls on the M4F, are counted in the stage that reads them).
 #include <cmath>
+#include <type_traits>
 
 #include "adcs/control/adrc.hpp"
 #include "adcs/estimate/fusion.hpp"
 #include "adcs/plant/drag_free.hpp"
+#include "replay_model_dragfree.hpp"  // generated in the build tree by design_dragfree_model
 #include "replay_system.hpp"
 
 namespace replay {
 
+template <class S>
 class DragFreeSystem {
  public:
-  static constexpr const char* kName = "dragfree";
+  using Alg1 = adcs::DragFreeEskfT<S>;
+  using Alg2 = adcs::SaturatedEsfT<S>;
+  using Adrc = adcs::DragFreeAdrcT<S>;
+  static constexpr const char* kName = std::is_same_v<S, float> ? "dragfree_f" : "dragfree";
   // Row: Y (9: φ_sc, r_rel, φ_rel sensors), y_c (3: saturated accelerometers), φ_cmd (3).
   static constexpr int kInputWidth = 15;
   static constexpr int kCommandSize = 9, kParts = 2;
@@ -30,6 +43,7 @@ class DragFreeSystem {
   static constexpr const char* kStageNames[kCostStages] = {"predict", "eskf_update", "adrc_step",
                                                            "esf_update_fuse"};
   static constexpr double kPeriod = 0.1;  // [s] h, DragFreeParams default (seed 004 §4)
+  static_assert(kPeriod == kDragFreeModelPeriod, "the generated model is for another period");
   // Comparison scales (replay_system.hpp, Column): per group of like outputs, a power of ten at
   // or below the smallest of their largest |value|s over the recorded run, so that the 1e-12
   // tolerance means 12 significant digits of the signal, not of a value passing through zero.
@@ -56,7 +70,7 @@ class DragFreeSystem {
       // filter confidence: trace of Algorithm 1's covariance, Algorithm 2's P(2,2) per axis
       {"trP1", kP1}, {"P2x_ff", kP2}, {"P2y_ff", kP2}, {"P2z_ff", kP2}};
 
-  //! Everything the scenario derives from its defaults (make_config, eskf(), esf()).
+  //! Everything the scenario derives from its defaults (make_config, eskf(), esf()), in double.
   struct Built {
     adcs::DragFreeParams plant{};
     adcs::DragFreeEskf::Params e1{};
@@ -69,7 +83,8 @@ class DragFreeSystem {
     b.plant.period_s = kPeriod;
     const adcs::DragFreeParams& d = b.plant;
     adcs::DragFreeDiscrete model;
-    b.status = adcs::drag_free_discretize(d, model);
+    adcs::DragFreeAxisModel axes[3];
+    dragfree_model(model, axes);  // drag_free_discretize, drag_free_axis_model on the host
     const adcs::DragFreeNoise n = adcs::drag_free_noise(d);
     // q = (max|ḟ| h)² from the Table 2 disturbance (amplitude 7.7 mN, ω_d 1.2e-3 rad/s), spec §B.8
     const double qv = std::pow(7.7e-3 * 1.2e-3 * d.period_s, 2);
@@ -85,9 +100,7 @@ class DragFreeSystem {
     b.e1.R = (n.sigma_pos * n.sigma_pos) * adcs::Mat<9, 9>::Identity();
     b.e1.period_s = d.period_s;  // h of the discretisation
     for (int j = 0; j < 3; ++j) {
-      adcs::DragFreeAxisModel m;
-      const adcs::Status sj = adcs::drag_free_axis_model(d, j, m);
-      if (sj != adcs::Status::ok) b.status = sj;
+      const adcs::DragFreeAxisModel& m = axes[j];
       adcs::SaturatedEsfParams& e = b.e2[j];
       e.A_d = m.A_d;
       e.B_d = m.B_d;
@@ -108,13 +121,13 @@ class DragFreeSystem {
   DragFreeSystem() noexcept : DragFreeSystem(build()) {}
   explicit DragFreeSystem(const Built& b) noexcept
       : build_status_(b.status),
-        alg1_(b.e1),
-        alg2_{adcs::SaturatedEsf(b.e2[0]), adcs::SaturatedEsf(b.e2[1]), adcs::SaturatedEsf(b.e2[2])},
-        adrc_(b.adrc) {}
+        alg1_(in_scalar(b.e1)),
+        alg2_{Alg2(in_scalar(b.e2[0])), Alg2(in_scalar(b.e2[1])), Alg2(in_scalar(b.e2[2]))},
+        adrc_(in_scalar(b.adrc)) {}
 
   adcs::Status init_status() const noexcept {
     adcs::Status s = adcs::worst(build_status_, alg1_.status());
-    for (const adcs::SaturatedEsf& f : alg2_) s = adcs::worst(s, f.status());
+    for (const Alg2& f : alg2_) s = adcs::worst(s, f.status());
     return adcs::worst(s, adrc_.status());
   }
 
@@ -143,7 +156,7 @@ class DragFreeSystem {
   }
   //! The command u = [T_Csc; F_Csc; T_Ctm] of the last step_a().
   void command(double* u) const noexcept {
-    for (int i = 0; i < 9; ++i) u[i] = u_(i);
+    for (int i = 0; i < 9; ++i) u[i] = static_cast<double>(u_(i));
   }
 
   void outputs(double* v) const noexcept {
@@ -152,15 +165,24 @@ class DragFreeSystem {
     *v++ = static_cast<double>(st_adrc_);
     *v++ = static_cast<double>(st_alg2_);
     *v++ = static_cast<double>(st_fuse_);
-    for (int i = 0; i < 9; ++i) *v++ = u_(i);
-    for (int i = 0; i < 27; ++i) *v++ = alg1_.state()(i);
-    for (const adcs::SaturatedEsf& f : alg2_)
-      for (int i = 0; i < 3; ++i) *v++ = f.state()(i);
-    *v++ = alg1_.covariance().trace();
-    for (const adcs::SaturatedEsf& f : alg2_) *v++ = f.covariance()(2, 2);
+    for (int i = 0; i < 9; ++i) *v++ = static_cast<double>(u_(i));
+    for (int i = 0; i < 27; ++i) *v++ = static_cast<double>(alg1_.state()(i));
+    for (const Alg2& f : alg2_)
+      for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(f.state()(i));
+    *v++ = static_cast<double>(alg1_.covariance().trace());
+    for (const Alg2& f : alg2_) *v++ = static_cast<double>(f.covariance()(2, 2));
   }
 
  private:
+  //! The double parameters in S: themselves for the double System (constructed as before the
+  //! float one existed), rounded once (cast) for the float one.
+  template <class P>
+  static decltype(auto) in_scalar(const P& p) noexcept {
+    if constexpr (std::is_same_v<S, double>)
+      return (p);
+    else
+      return p.template cast<S>();
+  }
   //! Stage 1 (step 1): the predictions with u_{k-1}.
   void predict() noexcept {
     st_predict_ = adcs::Status::ok;
@@ -171,13 +193,15 @@ class DragFreeSystem {
     started_ = true;
   }
   //! Stage 2 (step 2): Algorithm 1 update with Y = row[0..8].
-  void eskf_update(const double* row) noexcept { st_update_ = alg1_.update(adcs::Vec<9>::Map(row)); }
+  void eskf_update(const double* row) noexcept {
+    st_update_ = alg1_.update(adcs::Vec<9>::Map(row).template cast<S>());
+  }
   //! Stage 3 (step 3): ADRC with φ_cmd = row[12..14].
   void adrc_step(const double* row) noexcept {
-    const adcs::DragFreeAdrcInput in{alg1_.state(),
-                                     adcs::Vec3(alg2_[0].state()(2), alg2_[1].state()(2), alg2_[2].state()(2)),
-                                     adcs::Vec3::Map(row + 12)};
-    adcs::DragFreeActuation act;
+    const adcs::DragFreeAdrcInputT<S> in{alg1_.state(),
+                                         adcs::Vec<3, S>(alg2_[0].state()(2), alg2_[1].state()(2), alg2_[2].state()(2)),
+                                         adcs::Vec3::Map(row + 12).template cast<S>()};
+    adcs::DragFreeActuationT<S> act;
     st_adrc_ = adrc_.step(in, act);
     u_ = act.stacked();  // [T_Csc; F_Csc; T_Ctm]
   }
@@ -186,16 +210,16 @@ class DragFreeSystem {
     st_alg2_ = adcs::Status::ok;
     st_fuse_ = adcs::Status::ok;
     for (int j = 0; j < 3; ++j) {
-      st_alg2_ = adcs::worst(st_alg2_, alg2_[j].update(row[9 + j], u_(3 + j)));
+      st_alg2_ = adcs::worst(st_alg2_, alg2_[j].update(static_cast<S>(row[9 + j]), u_(3 + j)));
       st_fuse_ = adcs::worst(st_fuse_, adcs::fuse_axis(alg1_, alg2_[j], j));
     }
   }
 
   adcs::Status build_status_;
-  adcs::DragFreeEskf alg1_;
-  adcs::SaturatedEsf alg2_[3];
-  adcs::DragFreeAdrc adrc_;
-  adcs::Vec<9> u_ = adcs::Vec<9>::Zero();
+  Alg1 alg1_;
+  Alg2 alg2_[3];
+  Adrc adrc_;
+  adcs::Vec<9, S> u_ = adcs::Vec<9, S>::Zero();
   bool started_ = false;
   adcs::Status st_predict_ = adcs::Status::ok, st_update_ = adcs::Status::ok, st_adrc_ = adcs::Status::ok,
                st_alg2_ = adcs::Status::ok, st_fuse_ = adcs::Status::ok;

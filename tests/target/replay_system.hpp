@@ -64,5 +64,6 @@ extern const Api kAttitudeF;  // the same in float (Cortex-M4F; issue 19)
 extern const Api kPpcF;       // seed 002 in float (Cortex-M4F; issue 19)
 extern const Api kHybridF;    // seed 001 in float (Cortex-M4F; issue 19)
 extern const Api kSe3F;       // seed 003 (the BsPdTC law) in float (Cortex-M4F; issue 19)
+extern const Api kDragFreeF;  // seed 004's sample in float (Cortex-M4F; issue 19)
 
 }  // namespace replay
