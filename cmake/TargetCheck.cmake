@@ -221,12 +221,12 @@ if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
                    adcs_m4f_saturated_quantizer_init adcs_m4f_ud_factorize adcs_m4f_mwgs_ud
                    adcs_m4f_agee_turner_update adcs_m4f_bierman_update adcs_m4f_sparse_propagate
                    adcs_m4f_drag_free_eskf_step adcs_m4f_saturated_esf_step adcs_m4f_saturated_esf_init
-                   adcs_m4f_drag_free_adrc_step adcs_m4f_drag_free_adrc_init adcs_m4f_pid_step)
+                   adcs_m4f_pid_step)
   add_test(NAME target_m4f_c_api_no_double
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/check-float-calls.py ${ADCS_ARM_OBJDUMP}
                    ${_m4f_c_lib} adcs_mrp_pd4f_init adcs_mrp_pd4f_step adcs_rw_alloc4f_init adcs_rw_alloc4f_step
                    adcs_ppcf_init adcs_ppcf_step adcs_hybrid43f_init adcs_hybrid43f_step adcs_se3_ptcf_init
-                   adcs_se3_ptcf_step)
+                   adcs_se3_ptcf_step adcs_drag_free_adrcf_init adcs_drag_free_adrcf_step)
   set_tests_properties(target_m4f_no_double target_m4f_c_api_no_double PROPERTIES LABELS target
                        FIXTURES_REQUIRED adcs_target_build)
 endif()

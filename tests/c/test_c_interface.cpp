@@ -17,6 +17,7 @@
 
 #include "adcs/actuator/rw_allocation.hpp"
 #include "adcs/c/adcs.h"
+#include "adcs/control/adrc.hpp"
 #include "adcs/control/hybrid_adaptive.hpp"
 #include "adcs/control/mrp_pd.hpp"
 #include "adcs/control/ppc_neural.hpp"
@@ -731,6 +732,173 @@ TEST(CInterface, Se3PtcRefusalsAndFailureCommands) {
   }
 }
 
+// ---- Seed 004: the drag-free ADRC (adcs_drag_free_adrc, adcs_drag_free_adrcf) ---------------------
+
+// The paper's configuration (DragFreeAdrcParams' defaults: seed 004 §4 gains, Table 2 plant), in
+// the C struct's scalar.
+template <class CParams>
+CParams drag_free_c_params(adcs_adrc_x_law x_law = ADCS_ADRC_X_NLPID) {
+  using S = std::remove_reference_t<decltype(CParams{}.period_s)>;
+  const adcs::DragFreeAdrcParams d;
+  CParams cp{};
+  cp.m_tm_kg = static_cast<S>(d.plant.m_tm);
+  cp.m_sc_kg = static_cast<S>(d.plant.m_sc);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      cp.I_tm_kgm2[i][j] = static_cast<S>(d.plant.I_tm(i, j));
+      cp.I_sc_kgm2[i][j] = static_cast<S>(d.plant.I_sc(i, j));
+      cp.K_trans_N_m[i][j] = static_cast<S>(d.plant.K_trans(i, j));
+      cp.D_trans_Ns_m[i][j] = static_cast<S>(d.plant.D_trans(i, j));
+      cp.K_rot_Nm_rad[i][j] = static_cast<S>(d.plant.K_rot(i, j));
+      cp.D_rot_Nms_rad[i][j] = static_cast<S>(d.plant.D_rot(i, j));
+    }
+  cp.period_s = static_cast<S>(d.plant.period_s);
+  const adcs::NlpidGains* g[3] = {&d.attitude, &d.drag_free, &d.tm_attitude};
+  S* k[3] = {cp.attitude, cp.drag_free, cp.tm_attitude};
+  for (int l = 0; l < 3; ++l) {
+    k[l][0] = static_cast<S>(g[l]->kp);
+    k[l][1] = static_cast<S>(g[l]->ki);
+    k[l][2] = static_cast<S>(g[l]->kd);
+  }
+  cp.alpha = static_cast<S>(d.alpha);
+  cp.delta = static_cast<S>(d.delta);
+  cp.integral = ADCS_ADRC_INTEGRAL_SCALED_SUM;
+  cp.limit = static_cast<S>(d.limit);
+  cp.x_law = x_law;
+  cp.pid_kp = static_cast<S>(d.pid_kp);
+  cp.pid_ki = static_cast<S>(d.pid_ki);
+  cp.pid_kd = static_cast<S>(d.pid_kd);
+  cp.on_failure = ADCS_FAILURE_SAFE_COMMAND;
+  return cp;
+}
+
+// Estimates that vary with k: small errors inside fal's linear zone, larger ones beyond it, and
+// every fourth sample a drag estimate large enough to clip the force (saturated).
+adcs::DragFreeAdrcInput drag_free_cpp_input(int k) {
+  adcs::DragFreeAdrcInput in;
+  for (int i = 0; i < 27; ++i) in.x_hat(i) = 1e-6 * std::sin(0.7 * i + 0.3 * k) * (i % 3 == 0 ? 1e4 : 1.0);
+  in.F_D_hat_N = adcs::Vec3(-12.8e-3, 4e-3, 1e-3 * k) * (k % 4 == 3 ? 5.0 : 1.0);
+  in.phi_sc_cmd_rad = adcs::Vec3(k >= 10 ? 0.03 : 0.0, 0.0, -1e-3 * k);
+  return in;
+}
+
+template <class CInput, class S>
+CInput drag_free_c_input(const adcs::DragFreeAdrcInputT<S>& in) {
+  CInput ci{};
+  for (int i = 0; i < 27; ++i) ci.x_hat[i] = in.x_hat(i);
+  for (int i = 0; i < 3; ++i) {
+    ci.F_D_hat_N[i] = in.F_D_hat_N(i);
+    ci.phi_sc_cmd_rad[i] = in.phi_sc_cmd_rad(i);
+  }
+  return ci;
+}
+
+template <class S, class CParams, class CState, class CInput, class COutput, class Init, class Step>
+void expect_drag_free_equals_cpp(Init init, Step step) {
+  int saturated = 0;
+  for (adcs_adrc_x_law x_law : {ADCS_ADRC_X_NLPID, ADCS_ADRC_X_PID, ADCS_ADRC_X_PID_COMPENSATED}) {
+    const CParams cp = drag_free_c_params<CParams>(x_law);
+    CState cs;
+    ASSERT_EQ(init(&cp, &cs), ADCS_STATUS_OK);
+    // The C++ law from the same values: the double parameters, rounded once into S.
+    adcs::DragFreeAdrcParams d;
+    d.x_law = static_cast<adcs::DragFreeXLaw>(x_law);
+    adcs::DragFreeAdrcT<S> cpp(d.cast<S>());
+    ASSERT_EQ(cpp.status(), adcs::Status::ok);
+    long allocations = 0;
+    for (int k = 0; k < 20; ++k) {
+      adcs::DragFreeAdrcInputT<S> in;
+      const adcs::DragFreeAdrcInput in_d = drag_free_cpp_input(k);
+      in.x_hat = in_d.x_hat.cast<S>();
+      in.F_D_hat_N = in_d.F_D_hat_N.cast<S>();
+      in.phi_sc_cmd_rad = in_d.phi_sc_cmd_rad.cast<S>();
+      const CInput ci = drag_free_c_input<CInput>(in);
+      COutput co{};
+      adcs::DragFreeActuationT<S> out;
+      adcs_status s = 0;
+      {
+        adcs::test::NoAllocScope scope;
+        s = step(&cs, &ci, &co);
+        allocations += scope.allocations();
+      }
+      ASSERT_EQ(s, static_cast<adcs_status>(cpp.step(in, out))) << k;
+      saturated += s == ADCS_STATUS_SATURATED;
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(std::memcmp(&co.T_Csc_Nm[i], &out.T_Csc_Nm(i), sizeof(S)), 0) << k;
+        EXPECT_EQ(std::memcmp(&co.F_Csc_N[i], &out.F_Csc_N(i), sizeof(S)), 0) << k;
+        EXPECT_EQ(std::memcmp(&co.T_Ctm_Nm[i], &out.T_Ctm_Nm(i), sizeof(S)), 0) << k;
+      }
+    }
+    EXPECT_EQ(allocations, 0);
+  }
+  EXPECT_GT(saturated, 0);  // the inputs reach the clipping branch
+}
+
+TEST(CInterface, DragFreeAdrcEqualsTheCppComponentBitForBitWithoutHeap) {
+  expect_drag_free_equals_cpp<double, adcs_drag_free_adrc_params, adcs_drag_free_adrc_state, adcs_drag_free_adrc_input,
+                              adcs_drag_free_adrc_output>(adcs_drag_free_adrc_init, adcs_drag_free_adrc_step);
+  expect_drag_free_equals_cpp<float, adcs_drag_free_adrcf_params, adcs_drag_free_adrcf_state,
+                              adcs_drag_free_adrcf_input, adcs_drag_free_adrcf_output>(adcs_drag_free_adrcf_init,
+                                                                                      adcs_drag_free_adrcf_step);
+}
+
+TEST(CInterface, DragFreeAdrcRefusalsAndFailureCommands) {
+  adcs_drag_free_adrc_state s;
+  adcs_drag_free_adrc_output out = {{7.0, 7.0, 7.0}, {7.0, 7.0, 7.0}, {7.0, 7.0, 7.0}};
+  const adcs_drag_free_adrc_input in = drag_free_c_input<adcs_drag_free_adrc_input>(drag_free_cpp_input(0));
+  adcs_drag_free_adrc_params p = drag_free_c_params<adcs_drag_free_adrc_params>();
+  EXPECT_EQ(adcs_drag_free_adrc_init(nullptr, &s), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(adcs_drag_free_adrc_init(&p, nullptr), ADCS_STATUS_INVALID_PARAMETER);
+  static adcs_drag_free_adrc_state never;
+  EXPECT_EQ(adcs_drag_free_adrc_step(&never, &in, &out), ADCS_STATUS_INVALID_PARAMETER);
+  EXPECT_EQ(out.F_Csc_N[0], 7.0);
+  // Refused sets: the zero-initialised struct (masses, inertias, h, alpha, delta, limit all 0), a
+  // spacecraft inertia that is not SPD, alpha above 1, a NaN gain, a negative PID gain, an unknown
+  // integral form, X law or failure policy. Each step then commands zero.
+  for (int which = 0; which < 8; ++which) {
+    p = drag_free_c_params<adcs_drag_free_adrc_params>();
+    if (which == 0) p = adcs_drag_free_adrc_params{};
+    if (which == 1) p.I_sc_kgm2[1][1] = -2700.0;
+    if (which == 2) p.alpha = 1.5;
+    if (which == 3) p.drag_free[2] = kNaN;
+    if (which == 4) p.pid_kd = -9.0;
+    if (which == 5) p.integral = 2;
+    if (which == 6) p.x_law = 3;
+    if (which == 7) p.on_failure = 7;
+    EXPECT_EQ(adcs_drag_free_adrc_init(&p, &s), ADCS_STATUS_INVALID_PARAMETER) << which;
+    EXPECT_EQ(adcs_drag_free_adrc_step(&s, &in, &out), ADCS_STATUS_INVALID_PARAMETER) << which;
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(out.T_Csc_Nm[i], 0.0) << which;
+      EXPECT_EQ(out.F_Csc_N[i], 0.0) << which;
+      EXPECT_EQ(out.T_Ctm_Nm[i], 0.0) << which;
+    }
+  }
+  // Bad input under each policy: zero, or the last good command; in float too. The integrals are
+  // kept: the next good sample commands what it would have without the bad one.
+  for (adcs_failure_policy policy : {ADCS_FAILURE_SAFE_COMMAND, ADCS_FAILURE_HOLD_LAST}) {
+    adcs_drag_free_adrcf_params pf = drag_free_c_params<adcs_drag_free_adrcf_params>();
+    pf.on_failure = policy;
+    adcs_drag_free_adrcf_state sf, reference;
+    ASSERT_EQ(adcs_drag_free_adrcf_init(&pf, &sf), ADCS_STATUS_OK);
+    ASSERT_EQ(adcs_drag_free_adrcf_init(&pf, &reference), ADCS_STATUS_OK);
+    adcs_drag_free_adrcf_input inf = drag_free_c_input<adcs_drag_free_adrcf_input>(drag_free_cpp_input(1));
+    adcs_drag_free_adrcf_output good{}, bad{}, next{}, next_ref{};
+    ASSERT_TRUE(adcs_status_usable(adcs_drag_free_adrcf_step(&sf, &inf, &good)));
+    ASSERT_TRUE(adcs_status_usable(adcs_drag_free_adrcf_step(&reference, &inf, &good)));
+    adcs_drag_free_adrcf_input poisoned = inf;
+    poisoned.x_hat[13] = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(adcs_drag_free_adrcf_step(&sf, &poisoned, &bad), ADCS_STATUS_NON_FINITE_INPUT);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(bad.T_Csc_Nm[i], policy == ADCS_FAILURE_HOLD_LAST ? good.T_Csc_Nm[i] : 0.0f);
+      EXPECT_EQ(bad.F_Csc_N[i], policy == ADCS_FAILURE_HOLD_LAST ? good.F_Csc_N[i] : 0.0f);
+      EXPECT_EQ(bad.T_Ctm_Nm[i], policy == ADCS_FAILURE_HOLD_LAST ? good.T_Ctm_Nm[i] : 0.0f);
+    }
+    ASSERT_TRUE(adcs_status_usable(adcs_drag_free_adrcf_step(&sf, &inf, &next)));
+    ASSERT_TRUE(adcs_status_usable(adcs_drag_free_adrcf_step(&reference, &inf, &next_ref)));
+    EXPECT_EQ(std::memcmp(&next, &next_ref, sizeof next), 0);
+  }
+}
+
 TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_mrp_pd4_state), 352u);
   EXPECT_EQ(sizeof(adcs_mrp_pd4f_state), 192u);
@@ -750,6 +918,10 @@ TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_se3_ptcf_state), 588u);
   EXPECT_EQ(alignof(adcs_se3_ptc_state), 16u);
   EXPECT_EQ(alignof(adcs_se3_ptcf_state), 4u);
+  EXPECT_EQ(sizeof(adcs_drag_free_adrc_state), 864u);
+  EXPECT_EQ(sizeof(adcs_drag_free_adrcf_state), 432u);
+  EXPECT_EQ(alignof(adcs_drag_free_adrc_state), 8u);
+  EXPECT_EQ(alignof(adcs_drag_free_adrcf_state), 4u);
 }
 
 }  // namespace ADCS_UNITY_ID

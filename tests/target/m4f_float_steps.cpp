@@ -1,7 +1,7 @@
 // Cortex-M4F float check (issue 19): the float instances of the attitude chain and seeds 001-004
 // that have no float C family (seed 002's and seed 003's baselines, the ESO-based ADRC flown on
-// seed 002's vehicle, seed 003's actuation stage, seed 004's U-D kernels, Algorithms 1 and 2, its
-// ADRC and PID) compiled for a single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16
+// seed 002's vehicle, seed 003's actuation stage, seed 004's U-D kernels, Algorithms 1 and 2 and
+// its PID) compiled for a single-precision FPU (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16
 // -mfloat-abi=hard) with -Wdouble-promotion -Wfloat-conversion -Werror. tools/check-float-calls.py
 // then walks the call graph of this object from the adcs_m4f_* entry points and fails if any
 // software-double helper (__aeabi_d*, __aeabi_*2d) or double libm function (sin, cos, sqrt, atan,
@@ -27,7 +27,7 @@
 
 namespace adcs {
 // The laws with a float C family (src/c: MRP PD, the wheel allocation, seed 002's PPATC, seed 001,
-// seed 003's BsPdTC) are compiled to code for this FPU once, in the cross C library
+// seed 003's BsPdTC, seed 004's ADRC) are compiled to code for this FPU once, in the cross C library
 // (tests/target/CMakeLists.txt, adcs_c_target), and ctest target_m4f_c_api_no_double walks their
 // init and step entry points there. Here they are in the clang whole-class check only (every
 // member, -Wdouble-promotion -Wfloat-conversion -Werror): compiled to code in this unit as well,
@@ -41,6 +41,8 @@ template class PrescribedTimeSe3T<float>;
 // Seed 001: its constructor runs the design in double on purpose (pole placement, Lyapunov solve:
 // software double once at start-up); the C family builds the law from ground-designed gains.
 template class HybridAdaptive<4, 3, float>;
+// Seed 004's ADRC (Han's fal: powf) with the Fig. 9 PID inside, constructor included.
+template class DragFreeAdrcT<float>;
 #endif
 // Seed 002's baseline (its constructor is float too: an LLT of J).
 template class AdaptiveTrackingT<float>;
@@ -54,8 +56,6 @@ template class SaturatedQuantizer<6, float>;
 // Seed 004's Algorithm 2 (one accelerometer axis), constructor included (an LDLT of P_0): its
 // truncated-normal moments in float (erfcf, expf, sqrtf).
 template class SaturatedEsfT<float>;
-// Seed 004's ADRC (Han's fal: powf) with the Fig. 9 PID inside, constructor included.
-template class DragFreeAdrcT<float>;
 template class Pid<3, float>;
 }  // namespace adcs
 
@@ -64,7 +64,6 @@ using EsoF = adcs::EsoAdrcAttitudeT<float>;
 using FtsF = adcs::FtsmcSe3T<float>;
 using SatQF = adcs::SaturatedQuantizer<6, float>;
 using EsfF = adcs::SaturatedEsfT<float>;
-using AdrcF = adcs::DragFreeAdrcT<float>;
 using PidF = adcs::Pid<3, float>;
 // Seed 004's U-D kernels (math/ud.hpp, math/sparse_rows.hpp) at the attitude block's size (18
 // states, 12 noise columns): the first part of seed 004 in float; its filters are still double.
@@ -94,10 +93,6 @@ extern "C" int adcs_m4f_saturated_esf_step(EsfF* f, const EsfF::Input* in, EsfF:
   return static_cast<int>(f->step(*in, *out));
 }
 extern "C" void adcs_m4f_saturated_esf_init(EsfF* f, const EsfF::Params* p) { ::new (static_cast<void*>(f)) EsfF(*p); }
-extern "C" int adcs_m4f_drag_free_adrc_step(AdrcF* c, const AdrcF::Input* in, AdrcF::Output* out) {
-  return static_cast<int>(c->step(*in, *out));
-}
-extern "C" void adcs_m4f_drag_free_adrc_init(AdrcF* c, const AdrcF::Params* p) { ::new (static_cast<void*>(c)) AdrcF(*p); }
 extern "C" int adcs_m4f_pid_step(PidF* c, const PidF::Input* in, PidF::Output* out) {
   return static_cast<int>(c->step(*in, *out));
 }

@@ -25,10 +25,11 @@
  * rigid-wheel scenarios, `adcs::MrpPd<4, S>`), the reaction-wheel torque allocation
  * (`adcs::RwTorqueAllocator<4, S>`), seed 002's prescribed-performance adaptive RBF law
  * (`adcs::PpcNeuralT<S>`), seed 001's adaptive law for 4 CMGs + 3 wheels
- * (`adcs::HybridAdaptive<4, 3, S>`) and seed 003's prescribed-time SE(3) law
- * (`adcs::PrescribedTimeSe3T<S>`), each in double (suffix none) and single precision (suffix f,
- * for FPUs without double: Cortex-M4F). The other families follow as their float instantiations
- * land (docs/TARGET.md).
+ * (`adcs::HybridAdaptive<4, 3, S>`), seed 003's prescribed-time SE(3) law
+ * (`adcs::PrescribedTimeSe3T<S>`) and seed 004's drag-free ADRC (`adcs::DragFreeAdrcT<S>`), each in
+ * double (suffix none) and single precision (suffix f, for FPUs without double: Cortex-M4F). The
+ * papers' baseline laws (seed 002's ATC and ESO-based ADRC, seed 003's FTSMC) and the estimators
+ * are C++ only (docs/TARGET.md).
  */
 #ifndef ADCS_C_ADCS_H
 #define ADCS_C_ADCS_H
@@ -491,6 +492,110 @@ ADCS_C_STATE(adcs_se3_ptcf_state, ADCS_SE3_PTCF_STATE_SIZE, ADCS_SE3_PTCF_STATE_
 adcs_status adcs_se3_ptcf_init(const adcs_se3_ptcf_params* params, adcs_se3_ptcf_state* state);
 adcs_status adcs_se3_ptcf_step(adcs_se3_ptcf_state* state, const adcs_se3_ptcf_input* in,
                                adcs_se3_ptcf_output* out);
+
+/* ---- Seed 004: the drag-free satellite's ADRC (adcs/control/adrc.hpp) ----------------------
+ * One sample (params.period_s; 0.1 s in the paper) of seed 004's active-disturbance-rejection law,
+ * eqs. (44)-(46): a nonlinear PID on Han's fal per loop and axis (spacecraft attitude, drag-free
+ * translation, test-mass attitude) plus compensation of the estimated disturbances,
+ *   T_Csc = I_sc X_att - T_Dsc_hat,  F_Csc = -X_df + m_sc h_idf - F_D_hat,
+ *   T_Ctm = I_tm X_tm - T_Dtm_hat - I_tm h_itm,
+ * each component clipped to [-limit, limit] (ADCS_STATUS_SATURATED when one was). The law reads
+ * the estimates of Algorithm 1 (the 27-state extended-state filter, after fusion) and Algorithm 2
+ * (the drag per axis); those filters are C++ only (adcs/estimate/drag_free_eskf.hpp,
+ * saturated_esf.hpp, fusion.hpp). A zero-initialised parameter set is refused (masses, inertias,
+ * period, alpha, delta, limit), but a zero gain is a valid choice that switches its term off: set
+ * every gain (the paper's: attitude {0.001, 0.00005, 0.01}, drag_free {0.5, 0.005, 1.9},
+ * tm_attitude {0.0001, 0, 0.0021}, alpha 0.5, delta 0.01, limit 0.03, integral scaled_sum). */
+typedef int32_t adcs_adrc_integral;
+#define ADCS_ADRC_INTEGRAL_SCALED_SUM 0 /* e_i = h sum(e_p), with halved integral gains (spec B.7) */
+#define ADCS_ADRC_INTEGRAL_RAW_SUM 1    /* e_i = sum(e_p), the paper's literal form */
+typedef int32_t adcs_adrc_x_law;
+#define ADCS_ADRC_X_NLPID 0             /* the paper's NLPID on the X force too, eq. (45) */
+#define ADCS_ADRC_X_PID 1               /* Fig. 9 baseline: linear PID on X, no compensation */
+#define ADCS_ADRC_X_PID_COMPENSATED 2   /* Fig. 9 baseline: the same PID + disturbance compensation */
+typedef struct adcs_drag_free_adrc_params {
+  double m_tm_kg;               /* [kg] test mass, > 0 */
+  double m_sc_kg;               /* [kg] spacecraft mass, > 0 */
+  double I_tm_kgm2[3][3];       /* [kg m^2] test-mass inertia, SPD */
+  double I_sc_kgm2[3][3];       /* [kg m^2] spacecraft inertia, SPD */
+  double K_trans_N_m[3][3];     /* [N/m] test-mass translational stiffness, finite */
+  double D_trans_Ns_m[3][3];    /* [N s/m] its damping, finite */
+  double K_rot_Nm_rad[3][3];    /* [N m/rad] rotational stiffness, finite (any sign) */
+  double D_rot_Nms_rad[3][3];   /* [N m s/rad] its damping, finite (any sign) */
+  double period_s;              /* [s] h, sample and actuation period, > 0 */
+  double attitude[3];           /* spacecraft attitude loop: k_p, k_i, k_d, each finite >= 0 */
+  double drag_free[3];          /* drag-free (translation) loop: k_p, k_i, k_d */
+  double tm_attitude[3];        /* test-mass attitude loop: k_p, k_i (unused), k_d */
+  double alpha;                 /* [-] fal exponent, in (0, 1] */
+  double delta;                 /* fal linear zone, > 0 */
+  adcs_adrc_integral integral;
+  double limit;                 /* [N m | N] each command component within +-limit, > 0 */
+  adcs_adrc_x_law x_law;
+  double pid_kp;                /* [N/m] Fig. 9 PID (x_law != NLPID), finite >= 0 */
+  double pid_ki;                /* [N/(m s)] */
+  double pid_kd;                /* [N s/m] */
+  adcs_failure_policy on_failure;
+} adcs_drag_free_adrc_params;
+typedef struct adcs_drag_free_adrc_input {
+  /* Algorithm 1's posterior after fusion, 3 components each, in this order (adcs::DragFreeIndex):
+   * phi_sc [rad], phi_sc_dot [rad/s], T_Dsc [N m], r [m], r_dot [m/s], F_Dsc [N], phi_rel [rad],
+   * phi_rel_dot [rad/s], T_Dtm [N m]. */
+  double x_hat[27];
+  double F_D_hat_N[3];          /* [N] Algorithm 2's predicted drag per axis */
+  double phi_sc_cmd_rad[3];     /* [rad] spacecraft attitude command */
+} adcs_drag_free_adrc_input;
+typedef struct adcs_drag_free_adrc_output {
+  double T_Csc_Nm[3];           /* [N m] spacecraft control torque */
+  double F_Csc_N[3];            /* [N] spacecraft control force */
+  double T_Ctm_Nm[3];           /* [N m] test-mass control torque */
+} adcs_drag_free_adrc_output;
+#define ADCS_DRAG_FREE_ADRC_STATE_SIZE 864
+#define ADCS_DRAG_FREE_ADRC_STATE_ALIGN 8
+ADCS_C_STATE(adcs_drag_free_adrc_state, ADCS_DRAG_FREE_ADRC_STATE_SIZE, ADCS_DRAG_FREE_ADRC_STATE_ALIGN);
+adcs_status adcs_drag_free_adrc_init(const adcs_drag_free_adrc_params* params, adcs_drag_free_adrc_state* state);
+adcs_status adcs_drag_free_adrc_step(adcs_drag_free_adrc_state* state, const adcs_drag_free_adrc_input* in,
+                                     adcs_drag_free_adrc_output* out);
+
+/* The same law in single precision (every field float; the law computes in float). */
+typedef struct adcs_drag_free_adrcf_params {
+  float m_tm_kg;
+  float m_sc_kg;
+  float I_tm_kgm2[3][3];
+  float I_sc_kgm2[3][3];
+  float K_trans_N_m[3][3];
+  float D_trans_Ns_m[3][3];
+  float K_rot_Nm_rad[3][3];
+  float D_rot_Nms_rad[3][3];
+  float period_s;
+  float attitude[3];
+  float drag_free[3];
+  float tm_attitude[3];
+  float alpha;
+  float delta;
+  adcs_adrc_integral integral;
+  float limit;
+  adcs_adrc_x_law x_law;
+  float pid_kp;
+  float pid_ki;
+  float pid_kd;
+  adcs_failure_policy on_failure;
+} adcs_drag_free_adrcf_params;
+typedef struct adcs_drag_free_adrcf_input {
+  float x_hat[27];
+  float F_D_hat_N[3];
+  float phi_sc_cmd_rad[3];
+} adcs_drag_free_adrcf_input;
+typedef struct adcs_drag_free_adrcf_output {
+  float T_Csc_Nm[3];
+  float F_Csc_N[3];
+  float T_Ctm_Nm[3];
+} adcs_drag_free_adrcf_output;
+#define ADCS_DRAG_FREE_ADRCF_STATE_SIZE 432
+#define ADCS_DRAG_FREE_ADRCF_STATE_ALIGN 4
+ADCS_C_STATE(adcs_drag_free_adrcf_state, ADCS_DRAG_FREE_ADRCF_STATE_SIZE, ADCS_DRAG_FREE_ADRCF_STATE_ALIGN);
+adcs_status adcs_drag_free_adrcf_init(const adcs_drag_free_adrcf_params* params, adcs_drag_free_adrcf_state* state);
+adcs_status adcs_drag_free_adrcf_step(adcs_drag_free_adrcf_state* state, const adcs_drag_free_adrcf_input* in,
+                                      adcs_drag_free_adrcf_output* out);
 
 #ifdef __cplusplus
 }
