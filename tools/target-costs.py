@@ -54,6 +54,13 @@ SYSTEMS_M4F = {
     "se3_f": "seed 003 BsPdTC PrescribedTimeSe3T<float>, Cortex-M4F: row conversion (double rows to float: "
              "library calls), one step() (control/prescribed_time_se3.hpp); the desired state and sat -> Q "
              "stay with the double ground code, as in se3-ptc --set scalar=float",
+    "atc_f": "seed 002's ATC baseline AdaptiveTrackingT<float> on the paper's flexible spacecraft, Cortex-M4F: row "
+             "conversion (double rows to float: library calls), one step() (control/adaptive_tracking.hpp)",
+    "eso_adrc_f": "the ESO-based ADRC EsoAdrcAttitudeT<float> on seed 002's flexible spacecraft (h = 0.05 s), "
+                  "Cortex-M4F: row conversion, one step() (control/eso_adrc_attitude.hpp)",
+    "se3_ftsmc_f": "seed 003's FTSMC baseline FtsmcSe3T<float>, Cortex-M4F: row conversion (double rows to float: "
+                   "library calls), one step() (control/ftsmc_se3.hpp); the desired state and sat -> Q stay with "
+                   "the double ground code, as in se3-ftsmc --set scalar=float",
     "dragfree_f": "seed 004 one 0.1 s sample in float, Cortex-M4F: DragFreeEskfT<float> + 3 SaturatedEsfT<float> "
                   "predict/update, DragFreeAdrcT<float> step(), 3 x fuse_axis; each reading converted to float "
                   "(library calls) in the stage that reads it (estimate/*.hpp, control/adrc.hpp)",
@@ -63,7 +70,8 @@ GOAL = 10000  # instructions per step (issue 7)
 # the desired state, quantisation, or estimators).
 CONTROLLER_STAGE = {"se3": "controller_step", "dragfree": "adrc_step", "attitude": "mrp_pd_step",
                     "attitude_f": "mrp_pd_step", "ppc": "ppc_step", "ppc_f": "ppc_step",
-                    "hybrid_f": "hybrid_step", "se3_f": "controller_step", "dragfree_f": "adrc_step"}
+                    "hybrid_f": "hybrid_step", "se3_f": "controller_step", "dragfree_f": "adrc_step",
+                    "atc_f": "law_step", "eso_adrc_f": "law_step", "se3_ftsmc_f": "controller_step"}
 QEMU_ARGS = ["-nographic", "-monitor", "none", "-serial", "none",
              "-semihosting-config", "enable=on,target=native", "-icount", "shift=0"]
 

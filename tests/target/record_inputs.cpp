@@ -3,17 +3,19 @@
 // input of every step as a C++ header of hex-float literals (exact): replay_inputs_<name>.hpp in
 // the build tree. Usage: record_inputs <hybrid|ppc|se3|dragfree> <out.hpp> <steps>
 // Rows are packed in the layout each System documents at its kInputWidth (replay_<name>.hpp).
-// (hybrid_f, ppc_f, se3_f, dragfree_f, attitude and attitude_f too: record_inputs
-// <hybrid_f|ppc_f|se3_f|dragfree_f|attitude|attitude_f> <out.hpp> <steps>.)
+// (the float Systems and attitude too: record_inputs <hybrid_f|ppc_f|atc_f|eso_adrc_f|se3_f|
+// se3_ftsmc_f|dragfree_f|attitude|attitude_f> <out.hpp> <steps>.)
 //
 // The loops follow src/scenarios/ with their default parameters and the RK4 / exact-ZOH truth the
 // scenarios offer; the plant wrappers are the scenarios' own (src/scenarios/truth_plants.hpp),
 // the drag-free truth is restated (drag_free.cpp keeps it with its noise streams):
 //   hybrid, hybrid_f  A-REF: TP-FULL + D1 deviations + σ_d, one RK4 step per 1 ms period
 //            (integrator=rk4); each System closes its own loop (hybrid_f: the float law)
-//   ppc, ppc_f  flexible spacecraft (2 panels x 4 modes) + disturbance, RK4 at 1e-4 s; each
-//            System closes its own loop (ppc_f: the float law)
-//   se3      chaser + target on SE(3), state 1, disturbance, RK4 at h/10 (integrator=rk4)
+//   ppc, ppc_f, atc_f, eso_adrc_f  flexible spacecraft (2 panels x 4 modes) + disturbance, RK4
+//            at min(T, 1e-3 s); each System closes its own loop at its period (the float laws:
+//            PPATC, the ATC baseline, the ESO-based ADRC at 0.05 s)
+//   se3, se3_f, se3_ftsmc_f  chaser + target on SE(3), state 1, disturbance, RK4 at h/10
+//            (integrator=rk4); the float Systems' rows carry the desired state (computed here)
 //   dragfree, dragfree_f  the 27-state exact ZOH truth with seeded noise (run seed 0 -> streams
 //            of seed 1); each System closes its own loop (dragfree_f: the float flight code)
 //   attitude, attitude_f  the cubesat of examples/cubesat_mrp_pd.cpp (RigidBodyRw<4>), 10 RK4
@@ -125,7 +127,7 @@ Rows record_ppc(const replay::Api& sys, int steps) {
   if (plant.status() != Status::ok) fail("flexible plant rejected");
   const FlexibleSimPlant sim{&plant, 0.0045, 0.0011};  // seed 002 §4: a = 0.0045 N m, n0 = 0.0011 rad/s
   const SinusoidalEulerReference ref;                   // seed 002 §4 defaults
-  if (sys.init_status() != Status::ok) fail("PPATC rejected");
+  if (sys.init_status() != Status::ok) fail(std::string(sys.name) + " rejected");
   const double T = sys.period_s;
   Plant::State x = Plant::initial_state(Vec3(0.25, 0.15, -0.20) * d2r, Vec3(0.02, 0.01, -0.02) * d2r);
   Rows rows;
@@ -213,9 +215,8 @@ Rows record_se3(int steps) {
 //! se3_f: the float law's own loop (state 1, RK4 at h/10). The row carries the desired state,
 //! computed here in double from the target's model as the float scenario's ground code does, and
 //! the law's raw command goes through sat -> Q here (the actuator, double), as in se3-ptc.
-Rows record_se3_f(int steps) {
-  const replay::Api& sys = replay::kSe3F;
-  if (sys.init_status() != Status::ok) fail("se3_f controller rejected");
+Rows record_se3_f(const replay::Api& sys, int steps) {
+  if (sys.init_status() != Status::ok) fail(std::string(sys.name) + " controller rejected");
   Se3Loop loop(sys.period_s);
   CompositeQuantizer<6> quantizer(seed003_quantizer_params());
   const Vec6 limit = se3_actuator_limits(loop.sp);
@@ -368,7 +369,7 @@ void write_header(const char* path, const char* name, const char* what, const Ro
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) fail("usage: record_inputs <hybrid|hybrid_f|ppc|ppc_f|se3|se3_f|dragfree|dragfree_f|attitude|attitude_f> <out.hpp> <steps>");
+  if (argc != 4) fail("usage: record_inputs <hybrid|hybrid_f|ppc|ppc_f|atc_f|eso_adrc_f|se3|se3_f|se3_ftsmc_f|dragfree|dragfree_f|attitude|attitude_f> <out.hpp> <steps>");
   const std::string name = argv[1];
   const int steps = std::atoi(argv[3]);
   if (steps < 1) fail("steps must be >= 1");
@@ -391,8 +392,17 @@ int main(int argc, char** argv) {
       rows = record_se3(steps);
       what = "seed 003 se3-ptc closed loop (state 1), 8 Hz";
     } else if (name == "se3_f") {
-      rows = record_se3_f(steps);
+      rows = record_se3_f(replay::kSe3F, steps);
       what = "seed 003 se3-ptc closed loop (state 1, float law), 8 Hz";
+    } else if (name == "se3_ftsmc_f") {
+      rows = record_se3_f(replay::kSe3FtsmcF, steps);
+      what = "seed 003 se3-ftsmc closed loop (state 1, float FTSMC), 8 Hz";
+    } else if (name == "atc_f") {
+      rows = record_ppc(replay::kAtcF, steps);
+      what = "seed 002 flexible-atc closed loop (float ATC), T = 1e-4 s";
+    } else if (name == "eso_adrc_f") {
+      rows = record_ppc(replay::kEsoAdrcF, steps);
+      what = "seed 002's vehicle under the ESO-based ADRC (float), h = 0.05 s";
     } else if (name == "dragfree") {
       rows = record_dragfree(replay::kDragFree, steps);
       what = "seed 004 dragfree-adrc closed loop, h = 0.1 s";

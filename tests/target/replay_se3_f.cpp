@@ -5,7 +5,7 @@
 #include "replay_runtime.hpp"
 
 namespace {
-replay::Se3FloatSystem g_system;  // static storage: its bytes show in the ELF's .bss
+replay::Se3FloatSystem<adcs::PrescribedTimeSe3T<float>> g_system;  // static storage: its bytes show in the ELF's .bss
 }
 
-const replay::Api replay::kSe3F = replay::ApiOf<replay::Se3FloatSystem, &g_system>::make();
+const replay::Api replay::kSe3F = replay::ApiOf<replay::Se3FloatSystem<adcs::PrescribedTimeSe3T<float>>, &g_system>::make();

@@ -65,5 +65,8 @@ extern const Api kPpcF;       // seed 002 in float (Cortex-M4F; issue 19)
 extern const Api kHybridF;    // seed 001 in float (Cortex-M4F; issue 19)
 extern const Api kSe3F;       // seed 003 (the BsPdTC law) in float (Cortex-M4F; issue 19)
 extern const Api kDragFreeF;  // seed 004's sample in float (Cortex-M4F; issue 19)
+extern const Api kAtcF;       // seed 002's ATC baseline in float (Cortex-M4F; issue 19)
+extern const Api kEsoAdrcF;   // the ESO-based ADRC on seed 002's vehicle in float (Cortex-M4F)
+extern const Api kSe3FtsmcF;  // seed 003's FTSMC baseline in float (Cortex-M4F; issue 19)
 
 }  // namespace replay
