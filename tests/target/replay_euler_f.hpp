@@ -13,6 +13,7 @@
 #include "adcs/control/adaptive_tracking.hpp"
 #include "adcs/control/eso_adrc_attitude.hpp"
 #include "adcs/plant/flexible_configurations.hpp"  // seed002_tracking_gains(), flexible_params_seed002()
+#include "replay_euler_row.hpp"
 #include "replay_system.hpp"
 
 namespace replay {
@@ -75,7 +76,7 @@ class EulerFloatSystem {
   using Controller = Law;
   using Traits = EulerFloatLaw<Law>;
   static constexpr const char* kName = Traits::kName;
-  static constexpr int kInputWidth = 16;  // t, ϑ (3), ω (3), ϑ_d (3), ϑ̇_d (3), ϑ̈_d (3)
+  static constexpr int kInputWidth = kEulerRowWidth;  // replay_euler_row.hpp
   static constexpr int kCommandSize = 3, kParts = 1;
   static constexpr double kPeriod = Traits::kPeriod;
   static constexpr int kCostStages = 2;
@@ -90,12 +91,7 @@ class EulerFloatSystem {
   //! conversions: library calls on the M4F), then the law's step(). The Input is a member, so
   //! that neither stage alone is dead code.
   void step_stages(int n, const double* row) noexcept {
-    in_.t_s = static_cast<float>(row[0]);
-    in_.state.theta_BN_rad = adcs::Vec3::Map(row + 1).cast<float>();
-    in_.state.omega_BN_B = adcs::Vec3::Map(row + 4).cast<float>();
-    in_.reference.angles = adcs::Vec3::Map(row + 7).cast<float>();
-    in_.reference.angles_dot = adcs::Vec3::Map(row + 10).cast<float>();
-    in_.reference.angles_ddot = adcs::Vec3::Map(row + 13).cast<float>();
+    fill_euler_row(row, in_);
     if (n < 2) return;
     status_ = ctrl_.step(in_, cmd_);
   }

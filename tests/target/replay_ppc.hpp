@@ -13,6 +13,7 @@
 
 #include "adcs/control/ppc_neural.hpp"
 #include "adcs/plant/flexible_configurations.hpp"  // seed002_tracking_gains()
+#include "replay_euler_row.hpp"
 #include "replay_system.hpp"
 
 namespace replay {
@@ -24,7 +25,7 @@ class PpcSystem {
   using Vec3S = adcs::Vec<3, S>;
   static constexpr const char* kName = std::is_same_v<S, float> ? "ppc_f" : "ppc";
   // Row: t, ϑ (3), ω (3), ϑ_d (3), ϑ̇_d (3), ϑ̈_d (3).
-  static constexpr int kInputWidth = 16;
+  static constexpr int kInputWidth = kEulerRowWidth;
   static constexpr int kCommandSize = 3, kParts = 1;
   static constexpr double kPeriod = 1.0e-4;  // [s] EulerTrackingGains default (spec §B.5)
   // Comparison scales (replay_system.hpp, Column): per group of like outputs, a power of ten at
@@ -57,12 +58,7 @@ class PpcSystem {
   //! double-to-float conversions: library calls on the M4F, the driver's cost, not the law's),
   //! then the law's step(). The Input is a member, so that neither stage alone is dead code.
   void step_stages(int n, const double* row) noexcept {
-    in_.t_s = static_cast<S>(row[0]);
-    in_.state.theta_BN_rad = adcs::Vec3::Map(row + 1).cast<S>();
-    in_.state.omega_BN_B = adcs::Vec3::Map(row + 4).cast<S>();
-    in_.reference.angles = adcs::Vec3::Map(row + 7).cast<S>();
-    in_.reference.angles_dot = adcs::Vec3::Map(row + 10).cast<S>();
-    in_.reference.angles_ddot = adcs::Vec3::Map(row + 13).cast<S>();
+    fill_euler_row(row, in_);
     if (n < 2) return;
     status_ = ctrl_.step(in_, cmd_);
   }
