@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# "Run the tests" (README command 2; .ci/run calls exactly this). About 25-35 minutes on 2 cores (over the 20-minute budget; README)
+# "Run the tests" (README command 2; .ci/run calls exactly this). About 30-35 minutes on 2 cores (over the 20-minute budget; README)
 # from a fresh clone with the packages installed (the table at the end gives each phase; README
 # has the measured figure).
 #   1. install missing Debian packages (tools/setup-deps.sh);
 #   2. Release tree (clang++-14, -Werror), BUILD_DIR: the Cortex-M7 checks (every public header,
-#      the Cortex-M4F float replays, the C example on both boards,
+#      the Cortex-M4F float replays of every controller, the C example on both boards,
 #      the instantiation units, the host/QEMU replays and their instruction counts), the callgrind
 #      instruction counts and adcs-bench (adcs-sim only when run-main asks for it);
 #   3. ASan + UBSan tree (clang++-14, -Werror), build-asan (tools/run-sanitizers.sh): every unit,
