@@ -76,7 +76,6 @@ class DragFreeSystem {
     adcs::DragFreeEskf::Params e1{};
     adcs::SaturatedEsfParams e2[3]{};
     adcs::DragFreeAdrcParams adrc{};
-    adcs::Status status = adcs::Status::ok;
   };
   static Built build() noexcept {
     Built b;
@@ -120,13 +119,12 @@ class DragFreeSystem {
 
   DragFreeSystem() noexcept : DragFreeSystem(build()) {}
   explicit DragFreeSystem(const Built& b) noexcept
-      : build_status_(b.status),
-        alg1_(in_scalar(b.e1)),
+      : alg1_(in_scalar(b.e1)),
         alg2_{Alg2(in_scalar(b.e2[0])), Alg2(in_scalar(b.e2[1])), Alg2(in_scalar(b.e2[2]))},
         adrc_(in_scalar(b.adrc)) {}
 
   adcs::Status init_status() const noexcept {
-    adcs::Status s = adcs::worst(build_status_, alg1_.status());
+    adcs::Status s = alg1_.status();
     for (const Alg2& f : alg2_) s = adcs::worst(s, f.status());
     return adcs::worst(s, adrc_.status());
   }
@@ -215,7 +213,6 @@ class DragFreeSystem {
     }
   }
 
-  adcs::Status build_status_;
   Alg1 alg1_;
   Alg2 alg2_[3];
   Adrc adrc_;
