@@ -232,6 +232,14 @@ if(ADCS_ARM_OBJDUMP AND Python3_Interpreter_FOUND)
 endif()
 
 add_custom_target(adcs_target_check)
+# Everything adcs_target_check builds on the host side: the compile checks, the gain and model
+# designs, the recorded inputs, the host replays and the comparator; adcs_target_check adds the
+# two nested Cortex-M builds. tools/run-tests.sh builds this with the host objects at -j 2 and
+# then the nested builds one after the other (docs/DECISIONS.md, "CI under 20 minutes",
+# item 26): on 2 cores, six compilers at once (two jobs here, two in each nested build) took
+# twice the CPU time of two at once.
+add_custom_target(adcs_target_host)
+add_dependencies(adcs_target_check adcs_target_host)
 add_test(NAME target_compile_check
          COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target adcs_target_check)
 set_tests_properties(target_compile_check PROPERTIES LABELS target TIMEOUT 1800
@@ -364,14 +372,16 @@ ExternalProject_Add(adcs_target_replay
              -DADCS_EIGEN_INCLUDE_DIR=${_eigen_inc0} -DADCS_REPLAY_GEN_DIR=${_rgen}
   BUILD_COMMAND ${CMAKE_COMMAND} --build ${_tdir} -j ${ADCS_TARGET_BUILD_JOBS}
   INSTALL_COMMAND ""
+  USES_TERMINAL_BUILD ON  # the console pool: never both nested builds at once (adcs_target_host)
   BUILD_ALWAYS ON
   EXCLUDE_FROM_ALL ON
   DEPENDS adcs_replay_inputs
   BUILD_BYPRODUCTS ${_elfs} ${_tdir}/c_example_m7.elf)
 
-add_dependencies(adcs_target_check adcs_target_replay adcs_replay_compare)
+add_dependencies(adcs_target_check adcs_target_replay)
+add_dependencies(adcs_target_host adcs_replay_inputs adcs_replay_compare)
 foreach(sys IN LISTS ADCS_REPLAY_SYSTEMS ADCS_REPLAY_SYSTEMS_M4F)
-  add_dependencies(adcs_target_check replay_${sys}_host)
+  add_dependencies(adcs_target_host replay_${sys}_host)
 endforeach()
 
 find_program(ADCS_QEMU qemu-system-arm)
@@ -407,6 +417,7 @@ ExternalProject_Add(adcs_target_m4f
              -DADCS_EIGEN_INCLUDE_DIR=${_eigen_inc0} -DADCS_REPLAY_GEN_DIR=${_rgen}
   BUILD_COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR}/target-m4f -j ${ADCS_TARGET_BUILD_JOBS}
   INSTALL_COMMAND ""
+  USES_TERMINAL_BUILD ON  # the console pool: never both nested builds at once (adcs_target_host)
   BUILD_ALWAYS ON
   EXCLUDE_FROM_ALL ON
   DEPENDS adcs_replay_inputs
@@ -497,7 +508,7 @@ endif()
 # and the bench fixtures ended the build alone for ~40 s. Defined here, they fill the cores
 # while the chain waits on a link (docs/DECISIONS.md, "CI under 20 minutes").
 add_custom_target(adcs_target_compile DEPENDS ${_outputs})
-add_dependencies(adcs_target_check adcs_target_compile)
+add_dependencies(adcs_target_host adcs_target_compile)
 # After the bench fixtures (an ordering only: the checks do not use them). bench/ is a
 # subdirectory, so its units come after every top-level command in build.ninja and, left there,
 # its longest unit (~110 s) started last and ended the build alone; the checks are ~60 short
