@@ -71,7 +71,7 @@ struct EulerFloatLaw<adcs::EsoAdrcAttitudeT<float>> {
 };
 
 template <class Law>
-class EulerFloatSystem {
+class EulerFloatSystem : public EulerRowSystem<Law> {
  public:
   using Controller = Law;
   using Traits = EulerFloatLaw<Law>;
@@ -83,33 +83,12 @@ class EulerFloatSystem {
   static constexpr const char* kStageNames[kCostStages] = {"inputs", "law_step"};
   static constexpr auto& kColumns = Traits::kColumns;
 
-  EulerFloatSystem() noexcept : ctrl_(Traits::params().template cast<float>()) {}
-  adcs::Status init_status() const noexcept { return ctrl_.status(); }
-
-  void step(const double* row) noexcept { step_stages(kCostStages, row); }
-  //! The first n stages of step() (cost mode): the row into the law's Input (16 double-to-float
-  //! conversions: library calls on the M4F), then the law's step(). The Input is a member, so
-  //! that neither stage alone is dead code.
-  void step_stages(int n, const double* row) noexcept {
-    fill_euler_row(row, in_);
-    if (n < 2) return;
-    status_ = ctrl_.step(in_, cmd_);
-  }
-  void step_part(int, const double* row) noexcept { step(row); }
-  void command(double* u) const noexcept {
-    for (int i = 0; i < 3; ++i) u[i] = static_cast<double>(cmd_.torque_B_Nm(i));
-  }
+  EulerFloatSystem() noexcept : EulerRowSystem<Law>(Traits::params().template cast<float>()) {}
   void outputs(double* v) const noexcept {
-    *v++ = static_cast<double>(status_);
-    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(cmd_.torque_B_Nm(i));
-    Traits::extra(ctrl_, v);
+    *v++ = static_cast<double>(this->status_);
+    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(this->cmd_.torque_B_Nm(i));
+    Traits::extra(this->ctrl_, v);
   }
-
- private:
-  Controller ctrl_;
-  typename Controller::Input in_{};
-  typename Controller::Output cmd_{};
-  adcs::Status status_ = adcs::Status::ok;
 };
 
 }  // namespace replay

@@ -19,7 +19,7 @@
 namespace replay {
 
 template <class S>
-class PpcSystem {
+class PpcSystem : public EulerRowSystem<adcs::PpcNeuralT<S>> {
  public:
   using Controller = adcs::PpcNeuralT<S>;
   using Vec3S = adcs::Vec<3, S>;
@@ -50,39 +50,17 @@ class PpcSystem {
     return p.template cast<S>();
   }
 
-  PpcSystem() noexcept : ctrl_(params()) {}
-  adcs::Status init_status() const noexcept { return ctrl_.status(); }
-
-  void step(const double* row) noexcept { step_stages(kCostStages, row); }
-  //! The first n stages of step() (cost mode): the row into the law's Input (in float, 16
-  //! double-to-float conversions: library calls on the M4F, the driver's cost, not the law's),
-  //! then the law's step(). The Input is a member, so that neither stage alone is dead code.
-  void step_stages(int n, const double* row) noexcept {
-    fill_euler_row(row, in_);
-    if (n < 2) return;
-    status_ = ctrl_.step(in_, cmd_);
-  }
-
-  void step_part(int, const double* row) noexcept { step(row); }
-  void command(double* u) const noexcept {
-    for (int i = 0; i < 3; ++i) u[i] = static_cast<double>(cmd_.torque_B_Nm(i));
-  }
+  PpcSystem() noexcept : EulerRowSystem<Controller>(params()) {}
 
   void outputs(double* v) const noexcept {
-    *v++ = static_cast<double>(status_);
-    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(static_cast<int>(ctrl_.branch(i)));
-    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(cmd_.torque_B_Nm(i));
-    *v++ = static_cast<double>(ctrl_.mu());
-    const adcs::Mat<7, 3, S>& W = ctrl_.weights();
+    *v++ = static_cast<double>(this->status_);
+    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(static_cast<int>(this->ctrl_.branch(i)));
+    for (int i = 0; i < 3; ++i) *v++ = static_cast<double>(this->cmd_.torque_B_Nm(i));
+    *v++ = static_cast<double>(this->ctrl_.mu());
+    const adcs::Mat<7, 3, S>& W = this->ctrl_.weights();
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 7; ++i) *v++ = static_cast<double>(W(i, j));
   }
-
- private:
-  Controller ctrl_;
-  typename Controller::Input in_{};
-  typename Controller::Output cmd_{};
-  adcs::Status status_ = adcs::Status::ok;
 };
 
 }  // namespace replay
