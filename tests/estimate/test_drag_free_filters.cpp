@@ -205,6 +205,21 @@ TEST(Adrc, FalIsContinuousOddWithSlopeTenB11_8) {
   EXPECT_EQ(adcs::fal(0.0, a, dl), 0.0);
 }
 
+TEST(Adrc, FalWithItsConstantComputedOnceIsTheSameBits) {
+  // DragFreeAdrc passes δ^{1−α} computed at construction (issue 20): the same values as fal()
+  // computing it per call, in both zones, both signs and both scalars.
+  for (double a : {0.25, 0.5, 0.75, 1.0})
+    for (double dl : {1e-3, 0.01, 0.3}) {
+      const double dp = std::pow(dl, 1.0 - a);
+      const float af = static_cast<float>(a), dlf = static_cast<float>(dl), dpf = std::pow(dlf, 1.0f - af);
+      for (double e : {0.0, 1e-9, -3e-6, 2.5e-3, -0.01, 0.02, -0.5, 7.0}) {
+        EXPECT_EQ(adcs::fal(e, a, dl, dp), adcs::fal(e, a, dl)) << a << " " << dl << " " << e;
+        const float ef = static_cast<float>(e);
+        EXPECT_EQ(adcs::fal(ef, af, dlf, dpf), adcs::fal(ef, af, dlf)) << a << " " << dl << " " << e;
+      }
+    }
+}
+
 // Roots of a monic-normalised cubic a3 s³ + a2 s² + a1 s + a0 (companion matrix).
 Eigen::Vector3cd cubic_roots(double a3, double a2, double a1, double a0) {
   Mat3 Cm = Mat3::Zero();

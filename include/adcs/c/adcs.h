@@ -549,7 +549,7 @@ typedef struct adcs_drag_free_adrc_output {
   double F_Csc_N[3];            /* [N] spacecraft control force */
   double T_Ctm_Nm[3];           /* [N m] test-mass control torque */
 } adcs_drag_free_adrc_output;
-#define ADCS_DRAG_FREE_ADRC_STATE_SIZE 864
+#define ADCS_DRAG_FREE_ADRC_STATE_SIZE 872
 #define ADCS_DRAG_FREE_ADRC_STATE_ALIGN 8
 ADCS_C_STATE(adcs_drag_free_adrc_state, ADCS_DRAG_FREE_ADRC_STATE_SIZE, ADCS_DRAG_FREE_ADRC_STATE_ALIGN);
 adcs_status adcs_drag_free_adrc_init(const adcs_drag_free_adrc_params* params, adcs_drag_free_adrc_state* state);
@@ -590,7 +590,7 @@ typedef struct adcs_drag_free_adrcf_output {
   float F_Csc_N[3];
   float T_Ctm_Nm[3];
 } adcs_drag_free_adrcf_output;
-#define ADCS_DRAG_FREE_ADRCF_STATE_SIZE 432
+#define ADCS_DRAG_FREE_ADRCF_STATE_SIZE 436
 #define ADCS_DRAG_FREE_ADRCF_STATE_ALIGN 4
 ADCS_C_STATE(adcs_drag_free_adrcf_state, ADCS_DRAG_FREE_ADRCF_STATE_SIZE, ADCS_DRAG_FREE_ADRCF_STATE_ALIGN);
 adcs_status adcs_drag_free_adrcf_init(const adcs_drag_free_adrcf_params* params, adcs_drag_free_adrcf_state* state);

@@ -144,6 +144,31 @@ void mwgs_ud(Mat<N, M, S>& W, const Eigen::Matrix<S, 1, M>& w, UdFactors<N, S>& 
   mwgs_ud<N, M, S>(W, w, first, N, M, out);
 }
 
+namespace detail {
+// The row loops of the two updates below read each entry once into a local: written as
+// `a[i] -= v * u[i]; u[i] += bv * a[i]` the compiler must reload u[i] after the store to a[i]
+// (they might overlap), one more Cortex-M7 instruction per entry. Same operations, same order:
+// the same bits.
+template <class S>
+inline void agee_turner_rows(S* u, S* a, S v, S bv, int n) noexcept {
+  for (int i = 0; i < n; ++i) {
+    const S ui = u[i];
+    const S ai = a[i] - v * ui;
+    a[i] = ai;
+    u[i] = ui + bv * ai;
+  }
+}
+template <class S>
+inline void bierman_rows(S* u, S* b, S p, S v, int n) noexcept {
+  for (int i = 0; i < n; ++i) {
+    const S uij = u[i];
+    const S bi = b[i];
+    u[i] = uij + bi * p;
+    b[i] = bi + uij * v;
+  }
+}
+}  // namespace detail
+
 //! Agee–Turner rank-one modification (Bierman 1977 §V.4; Thornton 1976): (U, D) ← the U-D factors
 //! of U D Uᵀ + c a aᵀ for c ≥ 0, in place; `a` is used as scratch. Columns from the last:
 //!   d̄_j = d_j + c_j a_j²,  b_j = c_j / d̄_j,  c_{j−1} = d_j b_j,  a_{0:j} −= a_j U(0:j, j),
@@ -161,36 +186,28 @@ void agee_turner_update(UdFactors<N, S>& f, identity_t<S> c, Vec<N, S>& a) noexc
     const S b = c / d_new;
     c = f.D(j) * b;
     f.D(j) = d_new;
-    const S bv = b * v;
-    S* u = f.U.col(j).data();
-    for (int i = 0; i < j; ++i) {
-      av[i] -= v * u[i];
-      u[i] += bv * av[i];
-    }
+    detail::agee_turner_rows<S>(f.U.col(j).data(), av, v, b * v, j);
   }
   if (c > S(0)) f.D(0) += c * av[0] * av[0];
 }
 
 //! Bierman's scalar measurement update (Bierman 1977 §V.3) of (U, D) for z = h x + v, var(v) = r
 //! > 0: updates the factors in place and writes the Kalman gain k (x⁺ = x + k (z − h x)). f = Uᵀhᵀ
-//! is given; entries before `first` must be zero (U upper triangular: first = the lowest index
-//! where h is nonzero), which skips the columns j < first, where the update changes nothing.
+//! is given from `first` on (U upper triangular: first = the lowest index where h is nonzero; f is
+//! zero before it, and those entries are not read), which skips the columns j < first, where the
+//! update changes nothing.
 //! α grows from r > 0, so every D_j stays ≥ 0. Returns α = h P hᵀ + r, the innovation variance.
 template <int N, class S>
 S bierman_update(UdFactors<N, S>& f, const Vec<N, S>& fvec, identity_t<S> r, int first, Vec<N, S>& k) noexcept {
-  S b[N] = {};
+  S b[N];  // b[j] is written at column j before it is read; only those before `first` start at 0
+  for (int i = 0; i < first; ++i) b[i] = S(0);
   S alpha = r;
   for (int j = first; j < N; ++j) {
     const S v = f.D(j) * fvec(j);
     const S alpha_next = alpha + fvec(j) * v;
     const S p = -fvec(j) / alpha;
     f.D(j) *= alpha / alpha_next;
-    S* u = f.U.col(j).data();
-    for (int i = 0; i < j; ++i) {
-      const S uij = u[i];
-      u[i] = uij + b[i] * p;
-      b[i] += uij * v;
-    }
+    detail::bierman_rows<S>(f.U.col(j).data(), b, p, v, j);
     b[j] = v;
     alpha = alpha_next;
   }
