@@ -918,8 +918,8 @@ TEST(CInterface, StateObjectsHaveTheDocumentedSizeAndAlignment) {
   EXPECT_EQ(sizeof(adcs_se3_ptcf_state), 588u);
   EXPECT_EQ(alignof(adcs_se3_ptc_state), 16u);
   EXPECT_EQ(alignof(adcs_se3_ptcf_state), 4u);
-  EXPECT_EQ(sizeof(adcs_drag_free_adrc_state), 864u);
-  EXPECT_EQ(sizeof(adcs_drag_free_adrcf_state), 432u);
+  EXPECT_EQ(sizeof(adcs_drag_free_adrc_state), 872u);  // 864 before issue 20 (δ^{1−α} kept)
+  EXPECT_EQ(sizeof(adcs_drag_free_adrcf_state), 436u);
   EXPECT_EQ(alignof(adcs_drag_free_adrc_state), 8u);
   EXPECT_EQ(alignof(adcs_drag_free_adrcf_state), 4u);
 }
