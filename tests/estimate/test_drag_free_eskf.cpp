@@ -13,6 +13,7 @@
 #include "adcs/estimate/eskf_ud.hpp"
 #include "adcs/estimate/fusion.hpp"
 #include "adcs/math/pinv.hpp"
+#include "adcs/math/sparse_rows.hpp"
 #include "adcs/math/ud.hpp"
 #include "drag_free_test_params.hpp"
 
@@ -416,6 +417,114 @@ TEST(EskfUd, RefusesWhatHasNoUdFactorsAndKeepsItsEstimate) {
   EXPECT_LE((f.covariance() - expected).norm(), 1e-14 * expected.norm());
   EXPECT_EQ(f.state()(6), 1.0);
   EXPECT_EQ(f.state()(2), 2.0);
+}
+
+// The factors of a step are written into the filter's spare buffer (issue 20), so a filter holds
+// one candidate at a time: accepting an older one changes nothing, the last one is accepted once,
+// and the result is the one-phase step's, bit for bit.
+TEST(EskfUd, OnlyItsLastCandidateIsAcceptedAndOnlyOnce) {
+  std::mt19937_64 gen(10);
+  std::normal_distribution<double> N01;
+  using F = adcs::EskfUd<8, 3, 2, 3>;
+  F f(random_eskf_model(gen));
+  ASSERT_EQ(f.status(), Status::ok);
+  ASSERT_EQ(f.predict(adcs::Vec<3>(0.1, -0.2, 0.3)), Status::ok);
+  const F reference_start = f;
+  const adcs::Vec<3> Y1(N01(gen), N01(gen), N01(gen)), Y2(N01(gen), N01(gen), N01(gen));
+  F::Candidate c1, c2;
+  ASSERT_EQ(f.update_candidate(Y1, c1), Status::ok);
+  ASSERT_EQ(f.update_candidate(Y2, c2), Status::ok);
+  const adcs::Vec<8> x0 = reference_start.state();
+  const adcs::UdFactors<8> f0 = reference_start.factors();
+  f.accept(c1);  // replaced by c2: nothing changes
+  EXPECT_EQ(f.state(), x0);
+  EXPECT_EQ(f.factors().U, f0.U);
+  EXPECT_EQ(f.factors().D, f0.D);
+  f.accept(c2);
+  F reference = reference_start;
+  ASSERT_EQ(reference.update(Y2), Status::ok);
+  EXPECT_EQ(f.state(), reference.state());
+  EXPECT_EQ(f.factors().U, reference.factors().U);
+  EXPECT_EQ(f.factors().D, reference.factors().D);
+  f.accept(c2);  // accepted already: nothing changes (the spare now holds the old factors)
+  EXPECT_EQ(f.factors().U, reference.factors().U);
+  EXPECT_EQ(f.factors().D, reference.factors().D);
+  // A fusion in between overwrites the spare: the candidate made before it is not accepted.
+  F::Candidate c3;
+  ASSERT_EQ(f.update_candidate(Y1, c3), Status::ok);
+  const adcs::Mat<2, 2> Po = (adcs::Mat<2, 2>() << 2e-3, 1e-4, 1e-4, 5e-4).finished();
+  ASSERT_EQ(f.replace_substate<2>({6, 2}, adcs::Vec<2>(1.0, 2.0), Po), Status::ok);
+  const adcs::Vec<8> x_fused = f.state();
+  const adcs::Mat<8, 8> P_fused = f.covariance();
+  f.accept(c3);
+  EXPECT_EQ(f.state(), x_fused);
+  EXPECT_EQ(f.covariance(), P_fused);
+  // reset() too.
+  F::Candidate c4;
+  ASSERT_EQ(f.update_candidate(Y1, c4), Status::ok);
+  f.reset();
+  const adcs::Mat<8, 8> P_reset = f.covariance();
+  f.accept(c4);
+  EXPECT_EQ(f.covariance(), P_reset);
+}
+
+// Bierman's update out of place (EskfUd's first output of a sample: no copy of the factors) is the
+// in-place update of a copy, bit for bit, whatever the destination held before, `first` > 0 too.
+TEST(UdFactors, OutOfPlaceBiermanIsTheInPlaceUpdateOfACopyBitForBit) {
+  std::mt19937_64 gen(11);
+  std::normal_distribution<double> N01;
+  for (int trial = 0; trial < 30; ++trial) {
+    adcs::Mat<7, 9> W;
+    for (int i = 0; i < 63; ++i) W.data()[i] = N01(gen);
+    Eigen::Matrix<double, 1, 9> w;
+    for (int i = 0; i < 9; ++i) w(i) = std::exp(2.0 * N01(gen));
+    adcs::UdFactors<7> in, other;
+    adcs::Mat<7, 9> W2 = W;
+    adcs::mwgs_ud<7, 9>(W, w, in);
+    W2.row(trial % 7) *= 3.0;
+    adcs::mwgs_ud<7, 9>(W2, w, other);  // a destination that held other factors
+    const int first = trial % 7;
+    adcs::Vec<7> h = adcs::Vec<7>::Zero();
+    for (int i = first; i < 7; ++i) h(i) = N01(gen);
+    const adcs::Vec<7> fv = in.U.transpose() * h;
+    const double r = std::exp(N01(gen));
+    adcs::UdFactors<7> copy = in;
+    adcs::Vec<7> k_in_place, k_out;
+    const double a1 = adcs::bierman_update<7>(copy, fv, r, first, k_in_place);
+    const double a2 = adcs::bierman_update<7>(in, other, fv, r, first, k_out);
+    EXPECT_EQ(a1, a2);
+    EXPECT_EQ(k_in_place, k_out);
+    EXPECT_EQ(copy.D, other.D) << trial;
+    EXPECT_EQ(copy.U, other.U) << trial;  // above the diagonal written, the unit pattern kept
+  }
+}
+
+// SparseRows::add_product: out += X v from X's nonzeros, each row's sum formed over its nonzeros in
+// column order and then added (EskfUd's B_d u and B_e Ĝ); equal to Eigen's product to rounding.
+TEST(SparseRows, AddProductSumsEachRowInColumnOrderThenAdds) {
+  std::mt19937_64 gen(12);
+  std::normal_distribution<double> N01;
+  for (int trial = 0; trial < 20; ++trial) {
+    adcs::Mat<18, 9> X;
+    for (int i = 0; i < 162; ++i) X.data()[i] = (i + trial) % 3 == 0 ? N01(gen) : 0.0;
+    adcs::Vec<9> v;
+    adcs::Vec<18> out, expected, eigen;
+    for (int i = 0; i < 9; ++i) v(i) = N01(gen);
+    for (int i = 0; i < 18; ++i) out(i) = N01(gen);
+    expected = eigen = out;
+    adcs::SparseRows<18, 9> nz;
+    nz.assign(X);
+    nz.add_product(v, out);
+    for (int i = 0; i < 18; ++i) {
+      double s = 0.0;
+      for (int j = 0; j < 9; ++j)
+        if (X(i, j) != 0.0) s += X(i, j) * v(j);
+      expected(i) += s;
+    }
+    eigen.noalias() += X * v;
+    EXPECT_EQ(out, expected) << trial;
+    EXPECT_LE((out - eigen).norm(), 1e-15 * (eigen.norm() + (X.cwiseAbs() * v.cwiseAbs()).norm())) << trial;
+  }
 }
 
 // The drag-free filter in U-D form against the Joseph form it replaced and against the same

@@ -101,15 +101,27 @@ bool valid(const EskfParams<N, NU, NL, NY, S>& p) noexcept {
 }
 
 namespace detail {
-//! X̂⁻ = A_d X̂ + B_d u + B_e Ĝ with Ĝ_i = clip(Δf̄_i, ±√q_i), A_d from its nonzeros.   seed 004 eq. (9)
-template <int N, int NU, int NL, class S>
-Vec<N, S> extended_state_prediction(const SparseRows<N, N, S>& A_nz, const Mat<N, NU, S>& B_d, const Mat<N, NL, S>& B_e,
+//! out += B v, for B dense (Eigen's product) or from its nonzeros (SparseRows::add_product).
+template <int N, int M, class S>
+void add_product(const Mat<N, M, S>& B, const Vec<M, S>& v, Vec<N, S>& out) noexcept {
+  out.noalias() += B * v;
+}
+template <int N, int M, class S>
+void add_product(const SparseRows<N, M, S>& B, const Vec<M, S>& v, Vec<N, S>& out) noexcept {
+  B.add_product(v, out);
+}
+
+//! X̂⁻ = A_d X̂ + B_d u + B_e Ĝ with Ĝ_i = clip(Δf̄_i, ±√q_i), A_d from its nonzeros; B_d and B_e
+//! dense matrices or their nonzeros (SparseRows; EskfUd: the drag-free blocks' B_d and B_e are 1/3
+//! and 1/27 nonzero).   seed 004 eq. (9)
+template <int N, int NU, int NL, class S, class BdT, class BeT>
+Vec<N, S> extended_state_prediction(const SparseRows<N, N, S>& A_nz, const BdT& B_d, const BeT& B_e,
                                     const Vec<NL, S>& sqrt_q, const Vec<N, S>& x, const Vec<NU, S>& u,
                                     const Vec<NL, S>& delta_f_nominal) noexcept {
   const Vec<NL, S> G_hat = delta_f_nominal.cwiseMax(-sqrt_q).cwiseMin(sqrt_q);  // seed 004 eq. (9)
   Vec<N, S> out = A_nz.mul_by_transpose(Mat<1, N, S>(x.transpose())).transpose();  // A_d x (sparse)
-  out.noalias() += B_d * u;
-  out.noalias() += B_e * G_hat;
+  add_product<N, NU, S>(B_d, u, out);
+  add_product<N, NL, S>(B_e, G_hat, out);
   return out;
 }
 

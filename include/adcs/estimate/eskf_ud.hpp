@@ -20,7 +20,9 @@
 // no square roots (the Cortex-M4F has no double sqrt; the M7's takes 30+ cycles), Bierman's
 // update costs O(N²) per output against a QR of an (N+NY) x N array, and the rank-one updates
 // let the time update use the structure of A_d instead of re-triangularising [A_d U | G] whole.
-// The factors are updated in place on fixed arrays: no heap.
+// The factors live in two fixed buffers, no heap: a step writes its candidate factors into the
+// spare one and accept() makes it the current one, so no 18 x 18 factor is copied into a
+// candidate and back (Candidate).
 //
 // Structure used: A_d from its nonzeros (SparseRows), C̃ likewise (Bierman starts at the first
 // state a row reaches), only the noise columns that carry noise (NG of them, a template parameter),
@@ -64,6 +66,8 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
     bool ok = valid(p_);
     sqrt_q_ = p_.q.cwiseMax(S(0)).cwiseSqrt();
     A_nz_.assign(p_.A_d);
+    Bd_nz_.assign(p_.B_d);
+    Be_nz_.assign(p_.B_e);
     // lead_ = L: rows L.. of A_d are upper triangular with a nonzero diagonal (then so are those
     // of A_d U: the time update scales them instead of re-factoring, see predict_candidate).
     lead_ = 0;
@@ -100,15 +104,22 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
   //! X̂ = X̂_0, P = P_0 (its factors, computed once at construction), θ cleared.
   void reset() noexcept {
     x_ = p_.x0;
-    f_ = f0_;
+    cur_ = 0;
+    fb_[0] = f0_;
+    ++generation_;  // a candidate made before the reset can no longer be accepted
     theta_ = S(0);
   }
 
   // ---- Two-phase form (detail::CandidateFilter, PartitionedFilter), as Eskf's.
+  //! A step's result before accept(). Its factors are not in it: they are written into the
+  //! filter's spare buffer (issue 20: copying the 18-state factors into each candidate and back
+  //! was ~3,500 Cortex-M7 instructions per sample). So a filter holds one candidate at a time:
+  //! making another replaces it, and accept() of any but the last one made changes nothing.
   struct Candidate {
     State x;
-    Factors f;
-    S theta = S(-1);  //!< θ of a prediction; < 0 otherwise
+    S theta = S(-1);          //!< θ of a prediction; < 0 otherwise
+    int slot = -1;            //!< the buffer holding its factors (< 0: none written)
+    unsigned generation = 0;  //!< which of the filter's candidates it is
   };
 
   //! (A_d U)ᵀ (the first half of the time update; column i is row i of A_d U), from A_d's
@@ -116,10 +127,10 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
   //! the Cortex-M7: 6,000 instructions fewer per sample than a row-by-row loop over U's
   //! triangle, which does half the multiply-adds on strided data.
   using Propagation = Mat<N, N, S>;
-  Propagation propagate() const noexcept { return A_nz_.mul_by_transpose(Mat<N, N, S>(f_.U.transpose())); }
+  Propagation propagate() const noexcept { return A_nz_.mul_by_transpose(Mat<N, N, S>(f().U.transpose())); }
   //! tr(A_d P A_dᵀ) = Σ_k D_k ‖(A_d U)(:, k)‖².
   S propagated_trace(const Propagation& AUt) const noexcept {
-    return (f_.D.transpose() * AUt.cwiseAbs2()).sum();
+    return (f().D.transpose() * AUt.cwiseAbs2()).sum();
   }
   //! tr Q1, Q1 = 4 B_e (l diag q) B_eᵀ.
   S q1_trace() const noexcept { return q1_trace_; }
@@ -130,7 +141,8 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
                                          S theta, Candidate& out) const noexcept {
     if (status_ != Status::ok) return status_;
     if (!all_finite(u) || !all_finite(delta_f_nominal)) return Status::non_finite_input;
-    out.x = detail::extended_state_prediction<N, NU, NL>(A_nz_, p_.B_d, p_.B_e, sqrt_q_, x_, u, delta_f_nominal);
+    out.x = detail::extended_state_prediction<N, NU, NL>(A_nz_, Bd_nz_, Be_nz_, sqrt_q_, x_, u, delta_f_nominal);
+    Factors& f = begin_candidate(out);
     S wP = S(1), wQ1 = S(1);  // θ → ∞: APA = 0, no inflation
     if (!(theta > S(0))) wQ1 = S(0);  // no increment bound: the plain Kalman prediction (Q1 = 0)
     else if (std::isfinite(theta)) {
@@ -142,25 +154,25 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
     //   U⁻(:, L:) = T(:, L:) S⁻¹,  D⁻(L:) = S² D̃(L:)              (exact: T22 D̃2 T22ᵀ = U22 S²D̃2 U22ᵀ)
     // and the leading L x L block is T11 D̃1 T11ᵀ, re-factored by Thornton's MWGS (mwgs_ud).
     Mat<N, N, S> T = AUt.transpose();
-    const Eigen::Matrix<S, 1, N> wD = wP * f_.D.transpose();
+    const Eigen::Matrix<S, 1, N> wD = wP * this->f().D.transpose();
     const std::array<int, N> first{};
-    mwgs_ud<N, N>(T, wD, first, lead_, lead_, out.f);  // T11 only (rows and columns < L)
+    mwgs_ud<N, N>(T, wD, first, lead_, lead_, f);  // T11 only (rows and columns < L)
     for (int j = lead_; j < N; ++j) {  // the columns mwgs_ud leaves to us, whole
       const S s_j = T(j, j);
-      S* u = out.f.U.col(j).data();
+      S* u = f.U.col(j).data();
       const S* t = T.col(j).data();
       for (int i = 0; i < j; ++i) u[i] = t[i] / s_j;
       u[j] = S(1);
       for (int i = j + 1; i < N; ++i) u[i] = S(0);
-      out.f.D(j) = s_j * s_j * wD(j);
+      f.D(j) = s_j * s_j * wD(j);
     }
     // + (1 + 1/θ) Q1 + Q2 = Σ_k w_k g_k g_kᵀ: one Agee–Turner rank-one update per noise column.
     for (int k = 0; k < ng_; ++k) {
       const S wk = g_weight_(k) + wQ1 * g_weight_q1_(k);
       Vec<N, S> g = G_.col(k);
-      agee_turner_update<N>(out.f, wk, g);
+      agee_turner_update<N>(f, wk, g);
     }
-    if (!all_finite(out.x) || !representable(out.f)) return Status::out_of_range;
+    if (!all_finite(out.x) || !representable(f)) return Status::out_of_range;
     out.theta = theta;
     return Status::ok;
   }
@@ -175,32 +187,40 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
     for (int i = NY - 1; i >= 0; --i)
       for (int k = i + 1; k < NY; ++k) z(i) -= Rf_.U(i, k) * z(k);
     out.x = x_;
-    out.f = f_;
+    Factors& f = begin_candidate(out);
     Vec<N, S> fv, k;
+    if (NY == 0) f = this->f();  // no output: the candidate's factors are the current ones
     for (int i = 0; i < NY; ++i) {
+      // The first output reads the current factors and writes the candidate's (out of place: no
+      // copy of them first), the others update the candidate's in place.
+      const Factors& in = i == 0 ? this->f() : f;
       fv.setZero();  // f = Uᵀ c̃ᵢᵀ from c̃ᵢ's nonzeros
-      for (int e = C_nz_.start[i]; e < C_nz_.start[i + 1]; ++e) fv += C_nz_.val[e] * out.f.U.row(C_nz_.col[e]).transpose();
+      for (int e = C_nz_.start[i]; e < C_nz_.start[i + 1]; ++e) fv += C_nz_.val[e] * in.U.row(C_nz_.col[e]).transpose();
       const S innovation = z(i) - C_nz_.row_dot(i, out.x);
-      bierman_update<N>(out.f, fv, Rf_.D(i), first_[i], k);
+      bierman_update<N>(in, f, fv, Rf_.D(i), first_[i], k);
       out.x += k * innovation;
     }
-    if (!all_finite(out.x) || !representable(out.f)) return Status::out_of_range;
+    if (!all_finite(out.x) || !representable(f)) return Status::out_of_range;
     out.theta = S(-1);
     return Status::ok;
   }
 
+  //! Makes the candidate the filter's estimate: its factors' buffer becomes the current one.
+  //! Nothing changes for a candidate that is not the last one this filter made (Candidate).
   void accept(const Candidate& c) noexcept {
+    if (c.slot < 0 || c.generation != generation_) return;
     x_ = c.x;
-    f_ = c.f;
+    cur_ = c.slot;
+    ++generation_;  // accepted once
     if (c.theta >= S(0)) theta_ = c.theta;
   }
 
   const State& state() const noexcept { return x_; }
   //! The factors themselves.
-  const Factors& factors() const noexcept { return f_; }
+  const Factors& factors() const noexcept { return f(); }
   //! P = U D Uᵀ, formed (N³/6: for tests and telemetry, not the step).
-  Covariance covariance() const noexcept { return ud_covariance<N>(f_); }
-  S covariance_entry(int i, int j) const noexcept { return ud_covariance_entry<N>(f_, i, j); }
+  Covariance covariance() const noexcept { return ud_covariance<N>(f()); }
+  S covariance_entry(int i, int j) const noexcept { return ud_covariance_entry<N>(f(), i, j); }
   S theta() const noexcept { return theta_; }
   //! Always 0: the factored covariance never leaves the PSD cone (Eskf counts its projections).
   long psd_projections() const noexcept { return 0; }
@@ -209,7 +229,8 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
   //! is not symmetric PSD (it has no U-D factors).
   [[nodiscard]] Status estimate_candidate(const State& x, const Covariance& P, Candidate& out) const noexcept {
     if (!all_finite(x) || !all_finite(P)) return Status::non_finite_input;
-    if (!symmetric<N, S>(P) || !ud_factorize<N>(P, out.f) || !representable(out.f)) return Status::invalid_parameter;
+    Factors& f = begin_candidate(out);
+    if (!symmetric<N, S>(P) || !ud_factorize<N>(P, f) || !representable(f)) return Status::invalid_parameter;
     out.x = x;
     out.theta = S(-1);
     return Status::ok;
@@ -228,7 +249,9 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
     if (const Status s = detail::substate_check<N, K>(idx, x_o, P_o); s != Status::ok) return s;
     UdFactors<K, S> fo = UdFactors<K, S>::zero();
     if (!symmetric<K, S>(P_o) || !ud_factorize<K>(P_o, fo)) return Status::invalid_parameter;
-    Factors f = f_;
+    ++generation_;  // the spare is overwritten: an outstanding candidate can no longer be accepted
+    Factors& f = fb_[1 - cur_];
+    f = this->f();
     Mat<N, K, S> c;
     Vec<K, S> d;
     for (int a = 0; a < K; ++a) {
@@ -253,12 +276,21 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
       agee_turner_update<N>(f, fo.D(b), v);
     }
     if (!representable(f)) return Status::out_of_range;  // nothing changed
-    f_ = f;
+    cur_ = 1 - cur_;
     for (int a = 0; a < K; ++a) x_(idx[a]) = x_o(a);
     return Status::ok;
   }
 
  private:
+  //! The current factors.
+  const Factors& f() const noexcept { return fb_[cur_]; }
+  //! The spare buffer, for a new candidate's factors (Candidate); stamps the candidate.
+  Factors& begin_candidate(Candidate& out) const noexcept {
+    out.slot = 1 - cur_;
+    out.generation = ++generation_;
+    return fb_[out.slot];
+  }
+
   //! The factors are finite and so is P = U D Uᵀ: every P_ii = Σ_k U_ik² D_k is (then so is every
   //! P_ij, |P_ij| ≤ √(P_ii P_jj), and each partial sum of it by Cauchy–Schwarz). Finite factors
   //! can still describe a P beyond DBL_MAX (found by fuzz_seed004): such a step is refused. The
@@ -304,6 +336,8 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
 
   Params p_;
   SparseRows<N, N, S> A_nz_;
+  SparseRows<N, NU, S> Bd_nz_;
+  SparseRows<N, NL, S> Be_nz_;
   SparseRows<NY, N, S> C_nz_;  //!< C̃ = U_R⁻¹ C_d
   std::array<int, NY> first_{};
   int lead_ = N;                  //!< L: rows L.. of A_d upper triangular, nonzero diagonal
@@ -318,7 +352,12 @@ class EskfUd : public detail::CandidateFilter<EskfUd<N, NU, NL, NY, NG, S>, N, N
   S theta_fixed_ = S(0);
   Status status_ = Status::ok;
   State x_ = State::Zero();
-  Factors f_ = Factors::zero();
+  //! The current factors (fb_[cur_]) and the spare one a candidate is written into. Mutable: the
+  //! *_candidate functions are const (they do not change the estimate) but write the spare; so
+  //! one filter object is not for concurrent candidates from several threads.
+  mutable std::array<Factors, 2> fb_{Factors::zero(), Factors::zero()};
+  int cur_ = 0;
+  mutable unsigned generation_ = 0;  //!< stamps candidates: only the last one made is accepted
   S theta_ = S(0);
 };
 
